@@ -1,0 +1,61 @@
+# semslam: the two commands of the quick start are `make demo` and `make test`.
+#
+#   make deps     install the Debian packages the build needs (only those missing)
+#   make build    configure and build (Release) into build/
+#   make test     build, then run every test through ctest
+#   make demo     build, then run the main job on its built-in default
+#   make bench    build and run the benchmarks (installs libceres-dev for the Ceres comparison)
+#   make results  regenerate the measured results in docs/results.md
+
+BUILD_DIR ?= build
+JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
+
+DEB_PACKAGES := build-essential cmake pkg-config libeigen3-dev libsuitesparse-dev libgtest-dev libgmock-dev \
+                libcli11-dev nlohmann-json3-dev python3 python3-matplotlib python3-numpy
+BENCH_PACKAGES := libbenchmark-dev libceres-dev
+
+# Installs each named package that dpkg does not report as installed; `apt-get update` first, since a fresh
+# machine has no package lists.
+define install_missing
+	@missing=""; for p in $(1); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
+	done; \
+	if [ -n "$$missing" ]; then \
+	  echo "installing:$$missing"; \
+	  $(SUDO) apt-get update && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y --no-install-recommends $$missing; \
+	fi
+endef
+
+.PHONY: deps deps-bench configure build test demo bench results clean
+
+deps:
+	$(call install_missing,$(DEB_PACKAGES))
+
+deps-bench: deps
+	$(call install_missing,$(BENCH_PACKAGES))
+
+configure: deps
+	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DSEMSLAM_BUILD_BENCH=OFF
+
+build: configure
+	cmake --build $(BUILD_DIR) -j $(JOBS)
+
+test: build
+	ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS)
+
+demo: build
+	$(BUILD_DIR)/bin/semslam demo --out $(BUILD_DIR)/demo
+
+bench: deps-bench
+	cmake -S . -B $(BUILD_DIR)-bench -DCMAKE_BUILD_TYPE=Release -DSEMSLAM_BUILD_TESTS=OFF -DSEMSLAM_BUILD_BENCH=ON
+	cmake --build $(BUILD_DIR)-bench -j $(JOBS)
+	$(BUILD_DIR)-bench/bin/semslam_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+
+PYTHON ?= /usr/bin/python3
+
+results: build
+	$(PYTHON) python/make_results.py --build $(BUILD_DIR)
+
+clean:
+	rm -rf $(BUILD_DIR) $(BUILD_DIR)-bench

@@ -1,0 +1,14 @@
+#pragma once
+// The subcommands of the `semslam` tool. Each lives in its own <Name>Command.cpp and registers itself on the
+// top-level app; its callback throws semslam::InputError for bad input (exit 2) and anything else for failures
+// (exit 1).
+
+#include <CLI/CLI.hpp>
+
+namespace semslam::cli {
+
+void addOptimizeCommand(CLI::App& app);
+void addDemoCommand(CLI::App& app);
+void addEvalCommand(CLI::App& app);
+
+}  // namespace semslam::cli

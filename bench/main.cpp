@@ -1,0 +1,37 @@
+// semslam_bench: our solvers and Ceres on the standard pose graphs, then the ratio table (RatioTable.h).
+//
+//   semslam_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true   (what `make bench` runs)
+//   semslam_bench --benchmark_filter=manhattan                                       (one dataset)
+
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+
+#include "Datasets.h"
+#include "RatioTable.h"
+#include "SemslamSolverBenchmarks.h"
+#ifdef SEMSLAM_BENCH_HAVE_CERES
+#include "ceres/CeresSolverBenchmarks.h"
+#endif
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+
+  for (const semslam::bench::Dataset& dataset : semslam::bench::datasets()) {
+    semslam::bench::registerSemslamSolverBenchmarks(dataset);
+#ifdef SEMSLAM_BENCH_HAVE_CERES
+    semslam::bench::registerCeresSolverBenchmarks(dataset);
+#endif
+  }
+#ifndef SEMSLAM_BENCH_HAVE_CERES
+  std::printf("semslam_bench was built without Ceres (find_package(Ceres) failed): our solvers only\n");
+#endif
+
+  semslam::bench::RatioTable table;
+  semslam::bench::RatioTableReporter reporter(table);
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  table.print(stdout);
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,52 @@
+#pragma once
+// Factor: one term of the nonlinear least-squares objective  F(X) = ½ Σ_f chi2_f(X).
+//
+// A factor touches the variables named by keys() and gives, at a linearization point X,
+//   r(X)   its whitened error (dimension errorDimension()): ‖r‖² is its chi2 (ρ(‖r‖²) with a robust kernel, whose
+//          IRLS weight is folded into r and J),
+//   J_k    ∂r/∂δ_k for each key k, with respect to the right perturbation X_k ⊕ δ_k (translation-first tangent).
+//
+// Factors are immutable once built and shared through FactorPtr (std::shared_ptr<const Factor>), so factor
+// graphs, smoothers and the branching hypotheses of the hybrid belief share them instead of copying them.
+
+#include <memory>
+#include <vector>
+
+#include "semslam/geometry/Matrix.h"
+#include "semslam/graph/Key.h"
+#include "semslam/graph/Values.h"
+
+namespace semslam {
+
+/// A factor linearized at one point: whitened error, one whitened Jacobian per key in keys() order, and the
+/// factor's chi2 there (which differs from ‖whitenedError‖² only under a robust kernel). The solvers keep one per
+/// factor and reuse it across iterations, so its storage is allocated once.
+struct LinearizedFactor {
+  Vector whitenedError;
+  std::vector<Matrix> jacobians;
+  double chi2 = 0.0;
+};
+
+class Factor {
+ public:
+  explicit Factor(std::vector<Key> keys) : keys_(std::move(keys)) {}
+  virtual ~Factor() = default;
+  Factor(const Factor&) = delete;
+  Factor& operator=(const Factor&) = delete;
+
+  const std::vector<Key>& keys() const { return keys_; }
+  virtual int errorDimension() const = 0;
+
+  /// Whitened error and Jacobians at `values` (see the class comment); resizes `out` as needed.
+  virtual void linearize(const Values& values, LinearizedFactor& out) const = 0;
+
+  /// The factor's chi2 at `values`: ‖r‖², or ρ(‖r‖²) with a robust kernel.
+  virtual double chi2(const Values& values) const = 0;
+
+ private:
+  std::vector<Key> keys_;
+};
+
+using FactorPtr = std::shared_ptr<const Factor>;
+
+}  // namespace semslam

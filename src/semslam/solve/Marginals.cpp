@@ -1,0 +1,43 @@
+#include "semslam/solve/Marginals.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace semslam {
+
+Marginals::Marginals(const FactorGraph& graph, const Values& linearizationPoint)
+    : system_(graph, linearizationPoint) {
+  system_.assemble(linearizationPoint);
+  cholesky_.analyze(system_.hessian());
+  if (!cholesky_.factorize(system_.hessian())) {
+    throw std::runtime_error("marginals: the information matrix is not positive definite");
+  }
+}
+
+Matrix Marginals::marginalCovariance(Key key) const { return jointMarginal({key}).covariance(); }
+
+JointMarginal Marginals::jointMarginal(const std::vector<Key>& keys) const {
+  std::vector<Key> sorted = keys;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
+    throw std::invalid_argument("jointMarginal: a key is repeated");
+  }
+  std::vector<int> dimensions;
+  std::vector<int> columns;  // scalar columns of H for the requested keys, in request order
+  for (Key key : keys) {
+    const int offset = system_.offset(key);
+    const int d = system_.dimension(key);
+    dimensions.push_back(d);
+    for (int i = 0; i < d; ++i) columns.push_back(offset + i);
+  }
+  const int k = static_cast<int>(columns.size());
+  Matrix unit = Matrix::Zero(system_.dimension(), k);
+  for (int j = 0; j < k; ++j) unit(columns[j], j) = 1.0;
+  const Matrix solved = cholesky_.solve(unit);  // H⁻¹ E_S
+  Matrix covariance(k, k);
+  for (int i = 0; i < k; ++i) covariance.row(i) = solved.row(columns[i]);
+  covariance = 0.5 * (covariance + covariance.transpose());  // exact symmetry
+  return JointMarginal(keys, std::move(dimensions), std::move(covariance));
+}
+
+}  // namespace semslam

@@ -1,0 +1,35 @@
+#pragma once
+// Marginals: Gaussian marginal covariances of a factor graph's variables at a linearization point X.
+//
+// The Laplace approximation of the posterior at X has information H = JᵀJ (NormalEquations), so the joint
+// covariance of a set S of variables is the S×S block of H⁻¹. It is computed from the sparse Cholesky factor
+// P H Pᵀ = L Lᵀ by solving H Y = E_S for the |S| unit columns of S (two sparse triangular solves per column) and
+// keeping the rows of S: cost O(|S| · nnz(L)), never a dense inverse of H.
+
+#include <vector>
+
+#include "semslam/graph/FactorGraph.h"
+#include "semslam/graph/Values.h"
+#include "semslam/solve/JointMarginal.h"
+#include "semslam/solve/NormalEquations.h"
+#include "semslam/solve/SparseCholesky.h"
+
+namespace semslam {
+
+class Marginals {
+ public:
+  /// Linearizes and factors the graph at `linearizationPoint`; throws std::runtime_error if H is not positive
+  /// definite there.
+  Marginals(const FactorGraph& graph, const Values& linearizationPoint);
+
+  /// Covariance of one variable's tangent at the linearization point.
+  Matrix marginalCovariance(Key key) const;
+  /// Joint covariance of `keys`, in that order (a key may not repeat).
+  JointMarginal jointMarginal(const std::vector<Key>& keys) const;
+
+ private:
+  NormalEquations system_;
+  SparseCholesky cholesky_;
+};
+
+}  // namespace semslam

@@ -1,0 +1,59 @@
+#pragma once
+// Smoother: the estimation back end every method talks to. It owns a growing factor graph and the current
+// estimate of all its variables (a full smoothing belief: every pose and landmark, not only the latest).
+//
+//   update(new factors, new values, removed)  adds factors (each gets a FactorIndex, stable for the smoother's
+//                                             lifetime), initial values for new variables, removes factors by
+//                                             index, and re-solves;
+//   replaceFactor(index, factor)              swaps one factor for another (a max-mixture switching component,
+//                                             an EM re-weighting); it takes effect at the next update();
+//   estimate()                                the current MAP estimate;
+//   jointMarginal(keys)                       the joint Gaussian marginal of any set of variables at the estimate;
+//   fork()                                    a cheap copy that shares every factor with the original (factors are
+//                                             immutable), for the branching hypotheses of the hybrid belief.
+//
+// Implementations: BatchSmoother (re-solves the whole graph each update); an incremental one later.
+// Smoothers are not thread-safe; forks are independent and may be used from different threads.
+
+#include <memory>
+#include <vector>
+
+#include "semslam/graph/FactorGraph.h"
+#include "semslam/graph/Values.h"
+#include "semslam/solve/JointMarginal.h"
+
+namespace semslam {
+
+using FactorIndex = std::size_t;
+
+class Smoother {
+ public:
+  virtual ~Smoother() = default;
+
+  /// Adds factors and values for new variables, removes the factors `removed`, re-solves. Returns the indices
+  /// of the new factors, in order. Throws std::invalid_argument for a value whose key exists, an unknown or
+  /// already removed index, or a factor naming a variable that has no value.
+  virtual std::vector<FactorIndex> update(const FactorGraph& newFactors = {}, const Values& newValues = {},
+                                          const std::vector<FactorIndex>& removed = {}) = 0;
+
+  /// Replaces the factor at `index` (its keys may differ); takes effect at the next update().
+  virtual void replaceFactor(FactorIndex index, FactorPtr factor) = 0;
+
+  virtual const Values& estimate() const = 0;
+  template <class T>
+  const T& estimate(Key key) const {
+    return estimate().at<T>(key);
+  }
+
+  /// Joint marginal covariance of `keys` at the current estimate.
+  virtual JointMarginal jointMarginal(const std::vector<Key>& keys) const = 0;
+  Matrix marginalCovariance(Key key) const { return jointMarginal({key}).covariance(); }
+
+  /// The factors in force, in index order (removed ones left out).
+  virtual FactorGraph factors() const = 0;
+
+  /// A copy that shares all factors with this one; updating either leaves the other unchanged.
+  virtual std::unique_ptr<Smoother> fork() const = 0;
+};
+
+}  // namespace semslam

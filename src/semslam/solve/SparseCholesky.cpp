@@ -1,0 +1,35 @@
+#include "semslam/solve/SparseCholesky.h"
+
+#include <stdexcept>
+
+namespace semslam {
+
+SparseCholesky::SparseCholesky() {
+  // A matrix that is not positive definite is reported through factorize()'s result, not printed.
+  llt_.cholmod().print = 1;
+}
+
+void SparseCholesky::analyze(const SparseMatrix& upper) {
+  llt_.analyzePattern(upper);
+  analyzed_ = true;
+}
+
+bool SparseCholesky::factorize(const SparseMatrix& upper) {
+  if (!analyzed_) analyze(upper);
+  llt_.factorize(upper);
+  return llt_.info() == Eigen::Success;
+}
+
+Vector SparseCholesky::solve(const Vector& b) const {
+  Vector x = llt_.solve(b);
+  if (llt_.info() != Eigen::Success) throw std::runtime_error("sparse Cholesky solve failed");
+  return x;
+}
+
+Matrix SparseCholesky::solve(const Matrix& b) const {
+  Matrix x = llt_.solve(b);
+  if (llt_.info() != Eigen::Success) throw std::runtime_error("sparse Cholesky solve failed");
+  return x;
+}
+
+}  // namespace semslam

@@ -1,0 +1,37 @@
+#pragma once
+// SparseCholesky: P H Pᵀ = L Lᵀ for a sparse symmetric positive definite H given by its upper triangle, with
+// SuiteSparse CHOLMOD's supernodal factorization (through Eigen's CholmodSupport) under CHOLMOD's fill-reducing
+// ordering P (AMD, or METIS/nested dissection where that fills less).
+//
+// analyze() computes the ordering and the symbolic factor once per sparsity pattern; factorize() may then be
+// called for any matrix with that pattern (each Gauss-Newton or Levenberg-Marquardt iteration).
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/SparseCore>
+
+#include "semslam/geometry/Matrix.h"
+
+namespace semslam {
+
+class SparseCholesky {
+ public:
+  using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+  SparseCholesky();
+
+  /// Symbolic analysis of the pattern of `upper` (its upper triangle).
+  void analyze(const SparseMatrix& upper);
+  /// Numeric factorization; returns false if the matrix is not (numerically) positive definite.
+  bool factorize(const SparseMatrix& upper);
+  bool analyzed() const { return analyzed_; }
+
+  /// H⁻¹ b, and H⁻¹ B column by column (after a successful factorize).
+  Vector solve(const Vector& b) const;
+  Matrix solve(const Matrix& b) const;
+
+ private:
+  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Upper> llt_;
+  bool analyzed_ = false;
+};
+
+}  // namespace semslam
