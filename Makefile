@@ -9,6 +9,8 @@
 
 BUILD_DIR ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+# Debian's interpreter, where python3-matplotlib is installed.
+PYTHON ?= /usr/bin/python3
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
 DEB_PACKAGES := build-essential cmake pkg-config libeigen3-dev libsuitesparse-dev libgtest-dev libgmock-dev \
@@ -46,13 +48,12 @@ test: build
 
 demo: build
 	$(BUILD_DIR)/bin/semslam demo --out $(BUILD_DIR)/demo
+	$(PYTHON) python/plot_run.py $(BUILD_DIR)/demo --title "semslam demo: Gauss-Newton on a simulated 2D graph"
 
 bench: deps-bench
 	cmake -S . -B $(BUILD_DIR)-bench -DCMAKE_BUILD_TYPE=Release -DSEMSLAM_BUILD_TESTS=OFF -DSEMSLAM_BUILD_BENCH=ON
 	cmake --build $(BUILD_DIR)-bench -j $(JOBS)
 	$(BUILD_DIR)-bench/bin/semslam_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
-
-PYTHON ?= /usr/bin/python3
 
 results: build
 	$(PYTHON) python/make_results.py --build $(BUILD_DIR)

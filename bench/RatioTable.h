@@ -1,7 +1,8 @@
 #pragma once
 // RatioTable: collects the median of every benchmark as the console reporter prints it, and at the end prints
-// one table per run: our Gauss-Newton, our Levenberg-Marquardt and Ceres times per dataset, the ratios
-// Ceres/ours, and whether the final chi2 values agree.
+// our Gauss-Newton, our Levenberg-Marquardt and Ceres times per dataset with the ratios Ceres/ours, by wall time
+// and by process CPU time (all threads: the wall time of a loaded machine says little), then the final chi2 of
+// every solver and whether they agree.
 //
 // Benchmarks are named "<solver>/<dataset>" with <solver> one of the k* names below.
 
@@ -36,7 +37,8 @@ class RatioTable {
 
  private:
   struct Entry {
-    double milliseconds = 0.0;
+    double wallMs = 0.0;
+    double cpuMs = 0.0;
     double chi2 = 0.0;
     double iterations = 0.0;
     bool fromMedian = false;
@@ -44,6 +46,8 @@ class RatioTable {
     std::string error;
   };
   const Entry* find(const std::string& solver, const std::string& dataset) const;
+  void printTimes(std::FILE* out, bool wall) const;
+  void printChi2(std::FILE* out) const;
 
   std::vector<std::string> datasets_;
   std::map<std::string, std::map<std::string, Entry>> entries_;  // dataset -> solver -> entry

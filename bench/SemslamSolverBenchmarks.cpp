@@ -44,7 +44,8 @@ void registerSemslamSolverBenchmarks(const Dataset& dataset) {
                                      std::pair{kOursLevenbergMarquardt, SolverType::LevenbergMarquardt}}) {
     benchmark::RegisterBenchmark((std::string(name) + "/" + dataset.name).c_str(), solveWithSemslam, dataset, solver)
         ->Unit(benchmark::kMillisecond)
-        ->UseRealTime();
+        ->UseRealTime()
+        ->MeasureProcessCPUTime();
   }
 }
 

@@ -10,5 +10,8 @@ namespace semslam::cli {
 void addOptimizeCommand(CLI::App& app);
 void addDemoCommand(CLI::App& app);
 void addEvalCommand(CLI::App& app);
+void addCheckCommand(CLI::App& app);
+void addSimulateCommand(CLI::App& app);
+void addConvertCommand(CLI::App& app);
 
 }  // namespace semslam::cli

@@ -1,6 +1,7 @@
 // semslam demo: the main job on its built-in default. For now, a simulated 2D pose graph with landmarks (a robot
 // driving two laps of a rectangle among 16 landmarks, with noisy odometry and relative landmark observations),
-// optimised by Gauss-Newton from dead reckoning; it prints the errors against the truth and writes the graph.
+// optimised by Gauss-Newton from dead reckoning; it prints the errors against the truth and writes the graph and
+// a run folder (io/RunFolder.h) that python/plot_run.py draws.
 
 #include <cmath>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include "semslam/factors/PriorFactor.h"
 #include "semslam/factors/RelativePointFactor.h"
 #include "semslam/io/PoseGraphFile.h"
+#include "semslam/io/RunFolder.h"
 #include "semslam/solve/Marginals.h"
 #include "semslam/solve/Optimizer.h"
 
@@ -61,6 +63,32 @@ double positionRmse(const Values& values, const Truth& truth) {
     sum += (values.at<SE2>(i).translation() - truth.poses[i].translation()).squaredNorm();
   }
   return std::sqrt(sum / truth.poses.size());
+}
+
+/// The run folder: estimated and true trajectories, landmarks, and marginal position covariances.
+RunOutput makeRunOutput(const FactorGraph& graph, const Values& estimate, const Truth& truth) {
+  RunOutput run;
+  std::vector<double> times;
+  std::vector<SE3> estimated, trueSE3;
+  for (std::size_t i = 0; i < truth.poses.size(); ++i) {
+    times.push_back(static_cast<double>(i));
+    estimated.push_back(toSE3(estimate.at<SE2>(i)));
+    trueSE3.push_back(toSE3(truth.poses[i]));
+  }
+  run.trajectory = Trajectory(times, estimated);
+  run.truth = Trajectory(times, trueSE3);
+  const Marginals marginals(graph, estimate);
+  for (std::size_t i = 0; i < truth.poses.size(); ++i) {
+    run.posePositionCovariances.push_back(marginals.marginalCovariance(i).topLeftCorner(2, 2));
+  }
+  const std::size_t firstLandmark = truth.poses.size();
+  for (std::size_t l = 0; l < truth.landmarks.size(); ++l) {
+    const Key key = firstLandmark + l;
+    run.landmarkTruth.push_back({static_cast<int>(l), -1, truth.landmarks[l]});
+    if (!estimate.exists(key)) continue;
+    run.landmarks.push_back({static_cast<int>(l), estimate.at<Point2>(key), -1, 0.0, marginals.marginalCovariance(key)});
+  }
+  return run;
 }
 
 void run(const DemoOptions& options) {
@@ -116,7 +144,8 @@ void run(const DemoOptions& options) {
   std::filesystem::create_directories(options.out);
   const std::string path = (std::filesystem::path(options.out) / "optimized.g2o").string();
   writeG2o(path, graph, result.values);
-  std::printf("wrote %s\n", path.c_str());
+  writeRunFolder(options.out, makeRunOutput(graph, result.values, truth));
+  std::printf("wrote %s and the run folder %s\n", path.c_str(), options.out.c_str());
 }
 
 }  // namespace

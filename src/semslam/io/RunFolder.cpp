@@ -1,0 +1,102 @@
+#include "semslam/io/RunFolder.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <ostream>
+
+#include "semslam/eval/TumFormat.h"
+#include "semslam/io/AtomicFile.h"
+
+namespace semslam {
+
+namespace {
+
+/// Shortest decimal form that reads back to the same double.
+std::string number(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", value);
+  return buffer;
+}
+
+std::string truthField(const std::optional<int>& truth) {
+  if (!truth) return "";
+  return *truth == kNotALandmark ? "not-a-landmark" : std::to_string(*truth);
+}
+
+Vector landmarkPosition(const LandmarkState& state) {
+  return std::visit(
+      [](const auto& s) -> Vector {
+        using T = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<T, SE2> || std::is_same_v<T, SE3>) {
+          return s.translation();
+        } else {
+          return s;
+        }
+      },
+      state);
+}
+
+void writePositionColumns(std::ostream& out, const Vector& position) {
+  for (int i = 0; i < position.size(); ++i) out << "," << number(position(i));
+}
+
+}  // namespace
+
+SE3 toSE3(const Pose& pose) {
+  if (const SE3* spatial = std::get_if<SE3>(&pose)) return *spatial;
+  const SE2& planar = std::get<SE2>(pose);
+  return SE3(SO3::fromAxisAngle(Vector3::UnitZ(), planar.theta()), Point3(planar.x(), planar.y(), 0.0));
+}
+
+void writeRunFolder(const std::string& directory, const RunOutput& run) {
+  const std::filesystem::path folder(directory);
+  std::filesystem::create_directories(folder);
+  const std::string axes = run.dimension == 3 ? "x,y,z" : "x,y";
+
+  writeTumTrajectory((folder / "trajectory.tum").string(), run.trajectory);
+  if (run.truth) writeTumTrajectory((folder / "truth.tum").string(), *run.truth);
+
+  writeFileAtomically((folder / "landmarks.csv").string(), [&](std::ostream& out) {
+    out << "id," << axes << ",class,p_class\n";
+    for (const EstimatedLandmark& landmark : run.landmarks) {
+      out << landmark.id;
+      writePositionColumns(out, landmark.position);
+      out << "," << landmark.classIndex << ","
+          << (landmark.classIndex >= 0 ? number(landmark.classProbability) : "") << "\n";
+    }
+  });
+  if (!run.landmarkTruth.empty()) {
+    writeFileAtomically((folder / "landmarks_truth.csv").string(), [&](std::ostream& out) {
+      out << "id," << axes << ",class\n";
+      for (const LandmarkTruth& truth : run.landmarkTruth) {
+        out << truth.id;
+        writePositionColumns(out, landmarkPosition(truth.state));
+        out << "," << truth.classIndex << "\n";
+      }
+    });
+  }
+  writeFileAtomically((folder / "covariances.csv").string(), [&](std::ostream& out) {
+    out << "kind,id,cxx,cxy,cyy\n";
+    for (std::size_t i = 0; i < run.posePositionCovariances.size(); ++i) {
+      const Matrix& c = run.posePositionCovariances[i];
+      out << "pose," << i << "," << number(c(0, 0)) << "," << number(c(0, 1)) << "," << number(c(1, 1)) << "\n";
+    }
+    for (const EstimatedLandmark& landmark : run.landmarks) {
+      if (!landmark.positionCovariance) continue;
+      const Matrix& c = *landmark.positionCovariance;
+      out << "landmark," << landmark.id << "," << number(c(0, 0)) << "," << number(c(0, 1)) << ","
+          << number(c(1, 1)) << "\n";
+    }
+  });
+  if (!run.associations.empty()) {
+    writeFileAtomically((folder / "associations.csv").string(), [&](std::ostream& out) {
+      out << "step,detection,landmark,weight,truth\n";
+      for (const AssociationRecord& a : run.associations) {
+        out << a.step << "," << a.detection << "," << (a.landmark ? std::to_string(*a.landmark) : "null") << ","
+            << number(a.weight) << "," << truthField(a.truth) << "\n";
+      }
+    });
+  }
+}
+
+}  // namespace semslam

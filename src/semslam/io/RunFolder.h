@@ -1,0 +1,57 @@
+#pragma once
+// A run folder: what one run of a method writes, in files a person, evo or a plotting script can read.
+//
+//   trajectory.tum         estimated poses, `t x y z qx qy qz qw` (2D poses with z = 0 and a yaw quaternion)
+//   truth.tum              true poses, where known (same format)
+//   landmarks.csv          `id,x,y[,z],class,p_class` (the most probable class and its probability; -1 and empty
+//                          where the method keeps no class belief)
+//   landmarks_truth.csv    `id,x,y[,z],class`, where known
+//   covariances.csv        `kind,id,cxx,cxy,cyy`: the position block of each pose's (kind `pose`, id = its index
+//                          in trajectory.tum) and landmark's marginal covariance, for covariance ellipses
+//   associations.csv       `step,detection,landmark,weight,truth` (landmark `null` for the null hypothesis, truth
+//                          `not-a-landmark` for clutter, empty where unknown)
+// metrics.json is written by eval/RunMetrics. Every file is written atomically (io/AtomicFile.h); a file whose
+// data is empty (no truth, no associations) is not written.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "semslam/eval/Trajectory.h"
+#include "semslam/models/MeasurementLog.h"
+
+namespace semslam {
+
+struct EstimatedLandmark {
+  int id = 0;
+  Vector position;               // 2 or 3 numbers
+  int classIndex = -1;           // -1: no class belief
+  double classProbability = 0.0;
+  std::optional<Matrix> positionCovariance;
+};
+
+struct AssociationRecord {
+  int step = 0;
+  int detection = 0;
+  std::optional<int> landmark;   // nullopt: the null hypothesis
+  double weight = 1.0;
+  std::optional<int> truth;      // a landmark id, kNotALandmark for clutter, nullopt when unknown
+};
+
+struct RunOutput {
+  int dimension = 2;
+  Trajectory trajectory;
+  std::optional<Trajectory> truth;
+  std::vector<Matrix> posePositionCovariances;  // empty, or one per trajectory pose
+  std::vector<EstimatedLandmark> landmarks;
+  std::vector<LandmarkTruth> landmarkTruth;
+  std::vector<AssociationRecord> associations;
+};
+
+/// The SE3 form of a pose for trajectory files: SE2 (x, y, θ) becomes (x, y, 0) with a rotation θ about z.
+SE3 toSE3(const Pose& pose);
+
+/// Writes the files above into `directory` (created if needed).
+void writeRunFolder(const std::string& directory, const RunOutput& run);
+
+}  // namespace semslam

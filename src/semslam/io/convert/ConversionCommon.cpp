@@ -1,0 +1,146 @@
+#include "semslam/io/convert/ConversionCommon.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "semslam/io/InputError.h"
+#include "semslam/io/convert/ClassLabels.h"
+#include "semslam/io/convert/Keyframing.h"
+
+namespace semslam {
+
+std::string datasetFile(const std::string& folder, const std::string& name) {
+  if (!std::filesystem::is_directory(folder)) {
+    throw InputError(folder, 0, "not a folder (the converter reads the dataset's folder, which holds " + name + ")");
+  }
+  return (std::filesystem::path(folder) / name).string();
+}
+
+std::vector<NumericRow> readDatasetTable(const std::string& path, std::size_t columns, const std::string& names) {
+  std::vector<NumericRow> rows = readNumericTable(path, Separator::Whitespace);
+  if (rows.empty()) throw InputError(path, 0, "no data rows (expected rows of: " + names + ")");
+  for (const NumericRow& row : rows) {
+    if (row.values.size() != columns) {
+      throw InputError(path, row.line,
+                       "expected " + std::to_string(columns) + " numbers (" + names + "), found " +
+                           std::to_string(row.values.size()));
+    }
+  }
+  return rows;
+}
+
+int integerField(const std::string& path, const NumericRow& row, std::size_t column, const std::string& name,
+                 int minimum, int maximum) {
+  const double value = row.values.at(column);
+  if (value != std::floor(value) || value < minimum || value > maximum) {
+    std::ostringstream problem;
+    problem << name << " " << value << " is not an integer in [" << minimum << ", " << maximum << "]";
+    throw InputError(path, row.line, problem.str());
+  }
+  return static_cast<int>(value);
+}
+
+std::optional<std::size_t> findStep(const std::vector<TimeStep>& steps, double time, double tolerance) {
+  const auto it = std::lower_bound(steps.begin(), steps.end(), time - tolerance,
+                                   [](const TimeStep& step, double t) { return step.time < t; });
+  if (it == steps.end() || it->time > time + tolerance) return std::nullopt;
+  return static_cast<std::size_t>(it - steps.begin());
+}
+
+Matrix diagonalCovariance(const std::vector<double>& values) {
+  Matrix covariance = Matrix::Zero(static_cast<Eigen::Index>(values.size()), static_cast<Eigen::Index>(values.size()));
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    covariance(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i)) = values[i];
+  }
+  return covariance;
+}
+
+MeasurementLog finishConversion(MeasurementLog raw, const ConvertOptions& options, ConversionStats* stats) {
+  const int dimension = raw.header.dimension;
+  validateConvertOptions(options, dimension);
+  if (raw.steps.empty()) throw InputError("the dataset has no time steps");
+  ConversionStats counts;
+  counts.datasetSteps = raw.steps.size();
+  for (const TimeStep& step : raw.steps) counts.datasetDetections += step.detections.size();
+
+  MeasurementLog log;
+  log.header = std::move(raw.header);
+  if (options.keyframePeriod > 0.0) {
+    KeyframeSummary summary;
+    log.steps = selectKeyframes(raw.steps, options.keyframePeriod, &summary);
+    counts.stepsDroppedByKeyframing = summary.droppedSteps;
+    counts.detectionsDroppedByKeyframing = summary.droppedDetections;
+  } else {
+    log.steps = std::move(raw.steps);
+  }
+  const std::size_t before = log.steps.size();
+  counts.detectionsDroppedByMaxSteps = keepFirstSteps(log.steps, options.maxSteps);
+  counts.stepsDroppedByMaxSteps = before - log.steps.size();
+
+  assignClassLabels(log, options.classes, options.misclassification, options.seed);
+
+  // Priors.
+  const int tangent = dimension == 3 ? 6 : 3;
+  PosePrior prior;
+  const std::optional<Pose>& firstTruth = log.steps.front().truePose;
+  if (firstTruth) {
+    prior.mean = *firstTruth;
+  } else if (dimension == 3) {
+    prior.mean = SE3();
+  } else {
+    prior.mean = SE2();
+  }
+  std::vector<double> variances(static_cast<std::size_t>(tangent), kDefaultInitialPoseSigma * kDefaultInitialPoseSigma);
+  for (std::size_t i = 0; i < options.initialPoseSigmas.size(); ++i) {
+    variances[i] = options.initialPoseSigmas[i] * options.initialPoseSigmas[i];
+  }
+  prior.covariance = diagonalCovariance(variances);
+  log.header.initialPose = prior;
+  log.header.landmarkPriors.clear();
+  if (options.mapPriorSigma > 0.0) {
+    const double variance = options.mapPriorSigma * options.mapPriorSigma;
+    for (const LandmarkTruth& truth : log.header.landmarkTruth) {
+      LandmarkPrior landmark;
+      landmark.id = truth.id;
+      landmark.mean = truth.state;
+      const bool point3 = std::holds_alternative<Point3>(truth.state);
+      const bool point2 = std::holds_alternative<Point2>(truth.state);
+      const int size = point2 ? 2 : point3 ? 3 : std::holds_alternative<SE2>(truth.state) ? 3 : 6;
+      landmark.covariance = variance * Matrix::Identity(size, size);
+      log.header.landmarkPriors.push_back(std::move(landmark));
+    }
+  }
+
+  // Counts of what is written.
+  counts.steps = log.steps.size();
+  counts.landmarks = log.header.landmarkTruth.size();
+  for (const TimeStep& step : log.steps) {
+    counts.detections += step.detections.size();
+    if (step.truePose) ++counts.truePoses;
+    for (const Detection& detection : step.detections) {
+      if (detection.truthId && *detection.truthId == kNotALandmark) ++counts.clutter;
+    }
+  }
+
+  std::ostringstream source;
+  source << log.header.source << "; settings: " << describeConvertOptions(options, dimension);
+  source << "; initial pose prior at " << (firstTruth ? "the first true pose" : "the identity (no true first pose)");
+  source << "; dataset " << counts.datasetSteps << " steps, " << counts.datasetDetections << " detections";
+  if (options.keyframePeriod > 0.0) {
+    source << "; keyframing dropped " << counts.stepsDroppedByKeyframing << " steps and "
+           << counts.detectionsDroppedByKeyframing << " detections";
+  }
+  if (counts.stepsDroppedByMaxSteps > 0) {
+    source << "; max-steps dropped " << counts.stepsDroppedByMaxSteps << " steps and "
+           << counts.detectionsDroppedByMaxSteps << " detections";
+  }
+  source << "; written " << counts.steps << " steps, " << counts.detections << " detections (" << counts.clutter
+         << " clutter)";
+  log.header.source = source.str();
+  if (stats != nullptr) *stats = counts;
+  return log;
+}
+
+}  // namespace semslam

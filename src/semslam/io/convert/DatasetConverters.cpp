@@ -1,0 +1,23 @@
+#include "semslam/io/convert/DatasetConverters.h"
+
+#include "semslam/io/InputError.h"
+
+namespace semslam {
+
+const std::vector<std::string>& datasetKinds() {
+  static const std::vector<std::string> kinds = {"utias-lost-in-the-woods", "utias-starry-night", "mrclam", "isam"};
+  return kinds;
+}
+
+MeasurementLog convertDataset(const std::string& kind, const std::string& path, const ConvertOptions& options,
+                              ConversionStats* stats) {
+  if (kind == "utias-lost-in-the-woods") return convertLostInTheWoods(path, options, stats);
+  if (kind == "utias-starry-night") return convertStarryNight(path, options, stats);
+  if (kind == "mrclam") return convertMrclam(path, options, stats);
+  if (kind == "isam") return convertIsam(path, options, stats);
+  std::string known;
+  for (const std::string& name : datasetKinds()) known += (known.empty() ? "" : ", ") + name;
+  throw InputError("unknown dataset kind '" + kind + "' (known: " + known + ")");
+}
+
+}  // namespace semslam

@@ -1,0 +1,156 @@
+#include "semslam/io/convert/MrclamConverter.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "semslam/io/InputError.h"
+#include "semslam/io/convert/ConversionCommon.h"
+#include "semslam/models/UnicycleModel.h"
+
+namespace semslam {
+
+namespace {
+
+// Stamps have millisecond resolution; equal text gives equal doubles, the tolerance only guards the lookup.
+constexpr double kTimeTolerance = 1e-6;
+
+// The true pose at `time`, interpolated between the samples around it (sorted by time).
+std::optional<Pose> interpolateTruth(const std::vector<double>& times, const std::vector<SE2>& poses, double time) {
+  const auto upper = std::lower_bound(times.begin(), times.end(), time);
+  if (upper == times.end()) return std::nullopt;
+  const std::size_t j = static_cast<std::size_t>(upper - times.begin());
+  if (times[j] == time) return Pose(poses[j]);
+  if (j == 0) return std::nullopt;
+  const double gap = times[j] - times[j - 1];
+  if (gap > kMrclamMaxTruthGap) return std::nullopt;
+  return Pose(poses[j - 1].interpolate(poses[j], (time - times[j - 1]) / gap));
+}
+
+}  // namespace
+
+MeasurementLog convertMrclam(const std::string& folder, const ConvertOptions& options, ConversionStats* stats) {
+  validateConvertOptions(options, 2);
+  if (options.robot < 1 || options.robot > 5) {
+    throw InputError("--robot must be one of MRCLAM's robots 1..5, got " + std::to_string(options.robot));
+  }
+  const std::string robot = "Robot" + std::to_string(options.robot);
+  const std::string barcodePath = datasetFile(folder, "Barcodes.dat");
+  const std::string landmarkPath = datasetFile(folder, "Landmark_Groundtruth.dat");
+  const std::string odometryPath = datasetFile(folder, robot + "_Odometry.dat");
+  const std::string measurementPath = datasetFile(folder, robot + "_Measurement.dat");
+  const std::string truthPath = datasetFile(folder, robot + "_Groundtruth.dat");
+
+  MeasurementLog raw;
+  LogHeader& header = raw.header;
+  header.dimension = 2;
+  header.sensor.kind = SensorKind::RangeBearing;
+  header.sensor.bodyToSensor = SE2();
+  header.sensor.maxRange = 0.0;
+  header.sensor.fieldOfView = 1.2;
+
+  std::set<int> landmarks;
+  for (const NumericRow& row : readDatasetTable(landmarkPath, 5, "subject x y x_sd y_sd")) {
+    LandmarkTruth truth;
+    truth.id = integerField(landmarkPath, row, 0, "subject", 0, 1 << 30);
+    truth.state = Point2(row.values[1], row.values[2]);
+    if (!landmarks.insert(truth.id).second) {
+      throw InputError(landmarkPath, row.line, "subject " + std::to_string(truth.id) + " appears twice");
+    }
+    header.landmarkTruth.push_back(truth);
+  }
+  std::map<int, int> subjectOfBarcode;
+  for (const NumericRow& row : readDatasetTable(barcodePath, 2, "subject barcode")) {
+    const int subject = integerField(barcodePath, row, 0, "subject", 0, 1 << 30);
+    const int barcode = integerField(barcodePath, row, 1, "barcode", 0, 1 << 30);
+    if (!subjectOfBarcode.emplace(barcode, subject).second) {
+      throw InputError(barcodePath, row.line, "barcode " + std::to_string(barcode) + " appears twice");
+    }
+  }
+
+  // Step times: every distinct odometry and measurement stamp.
+  const std::vector<NumericRow> odometry = readDatasetTable(odometryPath, 3, "t v omega");
+  const std::vector<NumericRow> measurements = readDatasetTable(measurementPath, 4, "t barcode range bearing");
+  for (std::size_t i = 1; i < odometry.size(); ++i) {
+    if (odometry[i].values[0] < odometry[i - 1].values[0]) {
+      throw InputError(odometryPath, odometry[i].line, "time stamps must not decrease");
+    }
+  }
+  std::vector<double> times;
+  times.reserve(odometry.size() + measurements.size());
+  for (const NumericRow& row : odometry) times.push_back(row.values[0]);
+  for (const NumericRow& row : measurements) times.push_back(row.values[0]);
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+
+  // Odometry: the command in force at the start of each interval.
+  raw.steps.resize(times.size());
+  std::size_t next = 0;  // the first odometry row after the current step's stamp
+  double v = 0.0, omega = 0.0;
+  Vector3 slip = UnicycleModel::defaultFloor();
+  slip.y() = kMrclamLateralIntensity;
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    raw.steps[k].time = times[k];
+    if (k > 0) {
+      const double dt = times[k] - times[k - 1];
+      const UnicycleModel model(kMrclamVelocityIntensity / dt, kMrclamTurnRateIntensity / dt, slip);
+      raw.steps[k].odometry = model.integrate(v, omega, dt);
+    }
+    while (next < odometry.size() && odometry[next].values[0] <= times[k]) {
+      v = odometry[next].values[1];
+      omega = odometry[next].values[2];
+      ++next;
+    }
+  }
+
+  // Ground truth, interpolated at the step times.
+  const std::vector<NumericRow> truth = readDatasetTable(truthPath, 4, "t x y theta");
+  std::vector<double> truthTimes;
+  std::vector<SE2> truthPoses;
+  for (const NumericRow& row : truth) {
+    if (!truthTimes.empty() && row.values[0] <= truthTimes.back()) {
+      throw InputError(truthPath, row.line, "time stamps must increase");
+    }
+    truthTimes.push_back(row.values[0]);
+    truthPoses.emplace_back(row.values[1], row.values[2], row.values[3]);
+  }
+  for (TimeStep& step : raw.steps) step.truePose = interpolateTruth(truthTimes, truthPoses, step.time);
+
+  // Detections: every measurement row, landmarks with their subject as truth, the rest as clutter.
+  const Matrix covariance =
+      diagonalCovariance({kMrclamRangeSigma * kMrclamRangeSigma, kMrclamBearingSigma * kMrclamBearingSigma});
+  std::size_t robotSightings = 0, unknownBarcodes = 0;
+  for (const NumericRow& row : measurements) {
+    const std::optional<std::size_t> k = findStep(raw.steps, row.values[0], kTimeTolerance);
+    if (!k) throw InputError(measurementPath, row.line, "internal error: no step at this time stamp");
+    const int barcode = integerField(measurementPath, row, 1, "barcode", 0, 1 << 30);
+    Detection detection;
+    detection.geometry = Vector2(row.values[2], row.values[3]);
+    detection.covariance = covariance;
+    const auto subject = subjectOfBarcode.find(barcode);
+    if (subject == subjectOfBarcode.end()) {
+      detection.truthId = kNotALandmark;
+      ++unknownBarcodes;
+    } else if (landmarks.count(subject->second) == 0) {
+      detection.truthId = kNotALandmark;
+      ++robotSightings;
+    } else {
+      detection.truthId = subject->second;
+    }
+    raw.steps[*k].detections.push_back(std::move(detection));
+  }
+
+  std::ostringstream source;
+  source.precision(12);
+  source << "UTIAS MRCLAM " << robot << " (" << folder << "), semslam convert mrclam: steps at every odometry and "
+         << "measurement stamp, unicycle odometry of the command in force with white input noise intensities "
+         << kMrclamVelocityIntensity << " (m/s)^2 s and " << kMrclamTurnRateIntensity
+         << " (rad/s)^2 s (lateral slip " << kMrclamLateralIntensity << " m^2/s), range-bearing with sigma " << kMrclamRangeSigma << " m, " << kMrclamBearingSigma
+         << " rad, barcodes mapped through Barcodes.dat; clutter kept with truth not-a-landmark: " << robotSightings
+         << " sightings of other robots, " << unknownBarcodes << " unknown barcodes; Vicon truth interpolated";
+  header.source = source.str();
+  return finishConversion(std::move(raw), options, stats);
+}
+
+}  // namespace semslam

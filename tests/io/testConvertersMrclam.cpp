@@ -1,0 +1,182 @@
+// `semslam convert mrclam`: counts against the raw files (every measurement kept, clutter marked "not a landmark"),
+// barcodes mapped to subjects, odometry split at measurement stamps, round trip and determinism.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "io/ConverterTesting.h"
+#include "semslam/eval/MeasurementResiduals.h"
+#include "semslam/io/convert/MrclamConverter.h"
+#include "semslam/models/OdometryComposition.h"
+#include "semslam/models/UnicycleModel.h"
+#include "support/TestData.h"
+
+using namespace semslam;
+using semslam::test::rawRows;
+using semslam::test::TempDir;
+
+namespace {
+
+constexpr const char* kFolder = "mrclam/MRCLAM_Dataset6";
+
+struct RawCounts {
+  std::size_t steps = 0;
+  std::size_t measurements = 0;
+  std::size_t clutter = 0;
+  std::map<int, std::size_t> perSubject;  // landmark subjects only
+};
+
+// Counted from the raw files, independently of the converter.
+RawCounts countRaw(const std::filesystem::path& folder, int robot) {
+  const std::string name = "Robot" + std::to_string(robot);
+  std::map<int, int> subjectOfBarcode;
+  for (const auto& row : rawRows((folder / "Barcodes.dat").string())) {
+    subjectOfBarcode[static_cast<int>(row[1])] = static_cast<int>(row[0]);
+  }
+  RawCounts counts;
+  std::set<double> times;
+  for (const auto& row : rawRows((folder / (name + "_Odometry.dat")).string())) times.insert(row[0]);
+  for (const auto& row : rawRows((folder / (name + "_Measurement.dat")).string())) {
+    times.insert(row[0]);
+    ++counts.measurements;
+    const auto it = subjectOfBarcode.find(static_cast<int>(row[1]));
+    if (it == subjectOfBarcode.end() || it->second < 6 || it->second > 20) {
+      ++counts.clutter;
+    } else {
+      ++counts.perSubject[it->second];
+    }
+  }
+  counts.steps = times.size();
+  return counts;
+}
+
+}  // namespace
+
+TEST(MrclamConverter, EveryMeasurementIsKeptAndClutterIsNotALandmark) {
+  SEMSLAM_REQUIRE_DATA(folder, kFolder);
+  for (int robot = 1; robot <= 5; ++robot) {
+    ConvertOptions options;
+    options.robot = robot;
+    ConversionStats stats;
+    const MeasurementLog log = convertMrclam(folder.string(), options, &stats);
+    const RawCounts raw = countRaw(folder, robot);
+    EXPECT_EQ(log.steps.size(), raw.steps) << "robot " << robot;
+    EXPECT_EQ(test::detectionCount(log), raw.measurements) << "robot " << robot;
+    EXPECT_EQ(stats.clutter, raw.clutter) << "robot " << robot;
+    std::size_t clutter = 0;
+    std::map<int, std::size_t> perSubject;
+    for (const TimeStep& step : log.steps) {
+      for (const Detection& detection : step.detections) {
+        ASSERT_TRUE(detection.truthId.has_value());
+        if (*detection.truthId == kNotALandmark) {
+          ++clutter;
+        } else {
+          ++perSubject[*detection.truthId];
+        }
+      }
+    }
+    EXPECT_EQ(clutter, raw.clutter) << "robot " << robot;
+    EXPECT_EQ(perSubject, raw.perSubject) << "robot " << robot;
+    EXPECT_EQ(log.header.landmarkTruth.size(), 15u);
+    for (const LandmarkTruth& truth : log.header.landmarkTruth) {
+      EXPECT_GE(truth.id, 6);
+      EXPECT_LE(truth.id, 20);
+    }
+  }
+  // Robot 1 of Dataset 6, as SOURCE.txt describes it: 1,942 measurements, of which 407 are sightings of other
+  // robots and 1 an unknown barcode.
+  ConversionStats stats;
+  const MeasurementLog log = convertMrclam(folder.string(), ConvertOptions{}, &stats);
+  EXPECT_EQ(stats.detections, 1942u);
+  EXPECT_EQ(stats.clutter, 408u);
+  TempDir dir;
+  MeasurementLog back;
+  test::writeAndReadBack(log, dir, "robot1.jsonl", &back);
+  EXPECT_EQ(test::detectionCount(back), 1942u);
+  EXPECT_EQ(back.steps.size(), log.steps.size());
+}
+
+TEST(MrclamConverter, StepsSplitTheOdometryAtMeasurementStamps) {
+  SEMSLAM_REQUIRE_DATA(folder, kFolder);
+  const MeasurementLog log = convertMrclam(folder.string(), ConvertOptions{});
+  const auto odometry = rawRows((folder / "Robot1_Odometry.dat").string());
+  const auto measurements = rawRows((folder / "Robot1_Measurement.dat").string());
+  // Every detection sits at the step of its own stamp, in file order.
+  std::size_t i = 0;
+  for (const TimeStep& step : log.steps) {
+    for (const Detection& detection : step.detections) {
+      ASSERT_LT(i, measurements.size());
+      EXPECT_EQ(step.time, measurements[i][0]);
+      EXPECT_EQ(detection.geometry(0), measurements[i][2]);
+      EXPECT_EQ(detection.geometry(1), measurements[i][3]);
+      ++i;
+    }
+  }
+  EXPECT_EQ(i, measurements.size());
+  std::size_t checked = 0;
+  // Across a split, the two parts compose to the unsplit unicycle arc of the command in force.
+  for (std::size_t k = 1; k + 1 < log.steps.size(); ++k) {
+    if (log.steps[k].detections.empty()) continue;
+    const double t = log.steps[k].time;
+    const auto after = std::upper_bound(odometry.begin(), odometry.end(), t,
+                                        [](double time, const std::vector<double>& row) { return time < row[0]; });
+    if (after == odometry.begin() || after == odometry.end()) continue;
+    const auto& command = *(after - 1);
+    if (command[0] == t || log.steps[k + 1].time != (*after)[0] || log.steps[k - 1].time != command[0]) continue;
+    const Odometry whole = composeOdometry(*log.steps[k].odometry, *log.steps[k + 1].odometry);
+    const double dt = (*after)[0] - command[0];
+    const SE2 arc = SE2::Exp(Vector3(command[1] * dt, 0.0, command[2] * dt));
+    EXPECT_TRUE(std::get<SE2>(whole.increment).equals(arc, 1e-12)) << "step " << k;
+    // The white-noise model: splitting an interval leaves its covariance as it was (to first order).
+    const Vector3 slip(1e-6, kMrclamLateralIntensity, 1e-6);
+    const Odometry unsplit = UnicycleModel(kMrclamVelocityIntensity / dt, kMrclamTurnRateIntensity / dt, slip)
+                                 .integrate(command[1], command[2], dt);
+    EXPECT_LT((whole.covariance - unsplit.covariance).cwiseAbs().maxCoeff(),
+              1e-2 * unsplit.covariance.cwiseAbs().maxCoeff())
+        << whole.covariance << "\n"
+        << unsplit.covariance;
+    if (++checked == 20) break;
+  }
+  EXPECT_EQ(checked, 20u);
+}
+
+TEST(MrclamConverter, SameSeedSameBytesAndResidualsReported) {
+  SEMSLAM_REQUIRE_DATA(folder, kFolder);
+  ConvertOptions options;
+  options.robot = 3;
+  options.classes = 3;
+  options.misclassification = 0.1;
+  options.seed = 21;
+  options.keyframePeriod = 1.0;
+  TempDir dir;
+  ConversionStats stats;
+  const MeasurementLog log = convertMrclam(folder.string(), options, &stats);
+  const std::string a = test::writeAndReadBack(log, dir, "a.jsonl");
+  const std::string b = test::writeAndReadBack(convertMrclam(folder.string(), options), dir, "b.jsonl");
+  EXPECT_TRUE(a == b);
+  const RawCounts raw = countRaw(folder, 3);
+  EXPECT_EQ(stats.detections + stats.detectionsDroppedByKeyframing, raw.measurements);
+  EXPECT_EQ(stats.datasetDetections, raw.measurements);
+  // Clutter labels are uniform; landmark labels follow the categorical model.
+  options.seed = 22;
+  EXPECT_GT(test::expectSameExceptLabels(log, convertMrclam(folder.string(), options)), 0u);
+
+  const LogResidualStatistics residuals = computeResidualStatistics(log);
+  EXPECT_GT(residuals.detectionsEvaluated, 0u);
+  EXPECT_EQ(residuals.detectionsClutter, stats.clutter);
+  ASSERT_EQ(residuals.detection.size(), 2u);
+  // Robust std within a factor of two of the stated sigmas (the plain std has the data's outliers).
+  EXPECT_NEAR(residuals.detection[0].robustStd / kMrclamRangeSigma, 1.0, 0.5);
+  EXPECT_NEAR(residuals.detection[1].robustStd / kMrclamBearingSigma, 1.0, 0.5);
+  std::printf("%s", formatResidualStatistics(residuals).c_str());
+}
+
+TEST(MrclamConverter, RejectsAnUnknownRobot) {
+  SEMSLAM_REQUIRE_DATA(folder, kFolder);
+  ConvertOptions options;
+  options.robot = 6;
+  EXPECT_THROW(convertMrclam(folder.string(), options), InputError);
+}

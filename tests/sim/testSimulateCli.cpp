@@ -1,0 +1,122 @@
+// `semslam simulate`: the same seed gives the same bytes across runs of the tool, several tracks go to a
+// folder of track_NNN.jsonl, --write-scenario reproduces the shipped example, and bad input exits with 2.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "../support/RunCommand.h"
+#include "../support/TestData.h"
+#include "SimTesting.h"
+#include "semslam/io/MeasurementLogFile.h"
+#include "semslam/sim/ScenarioFile.h"
+
+namespace semslam {
+namespace {
+
+using test::runSemslam;
+using test::ScratchFolder;
+
+std::string quoted(const std::string& path) { return "\"" + path + "\""; }
+
+TEST(SimulateCli, Aliased2dIsDeterministicAcrossRuns) {
+  ScratchFolder folder;
+  const std::string a = folder.file("a.jsonl"), b = folder.file("b.jsonl"), c = folder.file("c.jsonl");
+  auto result = runSemslam("simulate aliased2d --steps 30 --seed 5 --out " + quoted(a));
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  result = runSemslam("simulate aliased2d --steps 30 --seed 5 --out " + quoted(b));
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  result = runSemslam("simulate aliased2d --steps 30 --seed 6 --out " + quoted(c));
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_EQ(test::fileBytes(a), test::fileBytes(b));
+  EXPECT_NE(test::fileBytes(a), test::fileBytes(c));
+  EXPECT_EQ(readMeasurementLog(a).steps.size(), 31u);
+}
+
+TEST(SimulateCli, SeveralTracksGoToAFolder) {
+  ScratchFolder folder;
+  const std::string out = folder.file("tracks");
+  const auto result = runSemslam("simulate aliased2d --tracks 12 --steps 10 --out " + quoted(out));
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_NE(result.output.find("track 12/12"), std::string::npos) << result.output;  // progress
+  for (int track = 0; track < 12; ++track) {
+    char name[32];
+    std::snprintf(name, sizeof name, "track_%03d.jsonl", track);
+    const std::string path = (std::filesystem::path(out) / name).string();
+    ASSERT_TRUE(std::filesystem::exists(path)) << path;
+    EXPECT_EQ(readMeasurementLog(path).steps.size(), 11u);
+  }
+  // Track 3 of the run is the same log whichever way it is asked for.
+  const std::string again = folder.file("again");
+  ASSERT_EQ(runSemslam("simulate aliased2d --tracks 12 --steps 10 --out " + quoted(again)).exitCode, 0);
+  EXPECT_EQ(test::fileBytes(out + "/track_003.jsonl"), test::fileBytes(again + "/track_003.jsonl"));
+}
+
+TEST(SimulateCli, WriteScenarioReproducesTheShippedExample) {
+  ScratchFolder folder;
+  const std::string written = folder.file("default.json");
+  auto result = runSemslam("simulate aliased2d --write-scenario " + quoted(written));
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_EQ(test::fileBytes(written),
+            test::fileBytes(std::string(SEMSLAM_SOURCE_DIR) + "/data/scenarios/aliased2d_default.json"));
+  // Simulating from the file gives the same bytes as from the built-in default.
+  const std::string fromFile = folder.file("file.jsonl"), builtIn = folder.file("builtin.jsonl");
+  ASSERT_EQ(runSemslam("simulate aliased2d --scenario " + quoted(written) + " --out " + quoted(fromFile)).exitCode, 0);
+  ASSERT_EQ(runSemslam("simulate aliased2d --out " + quoted(builtIn)).exitCode, 0);
+  EXPECT_EQ(test::fileBytes(fromFile), test::fileBytes(builtIn));
+  // --alpha reaches the log.
+  const std::string alpha = folder.file("alpha.jsonl");
+  ASSERT_EQ(runSemslam("simulate aliased2d --alpha 0.5 --out " + quoted(alpha)).exitCode, 0);
+  EXPECT_EQ(readMeasurementLog(alpha).header.classifier.alpha, 0.5);
+}
+
+TEST(SimulateCli, BadInputExitsWithTwo) {
+  ScratchFolder folder;
+  const std::string scenario = folder.file("bad.json");
+  test::writeText(scenario, "{\"format\": \"semslam-scenario\"}");
+  auto result = runSemslam("simulate aliased2d --scenario " + quoted(scenario) + " --out " + quoted(folder.file("x")));
+  EXPECT_EQ(result.exitCode, 2) << result.output;
+  EXPECT_NE(result.output.find("bad.json"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("missing field"), std::string::npos) << result.output;
+  result = runSemslam("simulate aliased2d --alpha 3 --out " + quoted(folder.file("x")));
+  EXPECT_EQ(result.exitCode, 2) << result.output;
+  result = runSemslam("simulate aliased2d");
+  EXPECT_EQ(result.exitCode, 2) << result.output;
+  result = runSemslam("simulate semantic --misclassification 1.5 --out " + quoted(folder.file("y")));
+  EXPECT_EQ(result.exitCode, 2) << result.output;
+  result = runSemslam("simulate semantic --trajectory " + quoted(scenario) + " --out " + quoted(folder.file("y")));
+  EXPECT_EQ(result.exitCode, 2) << result.output;  // no --trajectory-format
+  result = runSemslam("simulate semantic --trajectory " + quoted(scenario) + " --trajectory-format tum --out " +
+                      quoted(folder.file("y")));
+  EXPECT_EQ(result.exitCode, 2) << result.output;  // not a TUM file
+}
+
+TEST(SimulateCli, SemanticIsDeterministicAcrossRuns) {
+  ScratchFolder folder;
+  for (const std::string& options : {std::string("--dimension 2 --clutter 1"),
+                                     std::string("--dimension 3 --path lawnmower --misclassification 0.3")}) {
+    const std::string a = folder.file("a.jsonl"), b = folder.file("b.jsonl");
+    ASSERT_EQ(runSemslam("simulate semantic " + options + " --seed 9 --out " + quoted(a)).exitCode, 0);
+    ASSERT_EQ(runSemslam("simulate semantic " + options + " --seed 9 --out " + quoted(b)).exitCode, 0);
+    EXPECT_EQ(test::fileBytes(a), test::fileBytes(b)) << options;
+    ASSERT_EQ(runSemslam("simulate semantic " + options + " --seed 10 --out " + quoted(b)).exitCode, 0);
+    EXPECT_NE(test::fileBytes(a), test::fileBytes(b)) << options;
+  }
+}
+
+TEST(SimulateCli, SemanticFromKitti) {
+  SEMSLAM_REQUIRE_DATA(file, "kitti-odometry-poses/00.txt");
+  ScratchFolder folder;
+  const std::string out = folder.file("kitti.jsonl");
+  const auto result =
+      runSemslam("simulate semantic --dimension 3 --trajectory " + quoted(file.string()) +
+                 " --trajectory-format kitti --stride 5 --steps 400 --max-range 30 --out " + quoted(out));
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  const MeasurementLog log = readMeasurementLog(out);
+  EXPECT_EQ(log.steps.size(), 401u);
+  EXPECT_EQ(log.header.dimension, 3);
+  EXPECT_NE(log.header.source.find("00.txt"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace semslam
