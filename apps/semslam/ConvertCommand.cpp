@@ -53,15 +53,18 @@ void addConvertCommand(CLI::App& app) {
       ->check(CLI::IsMember(datasetKinds()));
   command->add_option("PATH", arguments->path, "the dataset folder (isam: the .txt file)")->required();
   command->add_option("--out", arguments->out, "the measurement log to write (JSON lines)")->required();
-  command->add_option("--classes", arguments->options.classes,
-                      "number of classes M; a landmark's class is its id mod M (1: no semantic part)")
+  command
+      ->add_option("--classes", arguments->options.classes,
+                   "number of classes M; a landmark's class is its id mod M (1: no semantic part)")
       ->capture_default_str();
-  command->add_option("--misclassification", arguments->options.misclassification,
-                      "categorical model's misclassification rate p of the sampled labels")
+  command
+      ->add_option("--misclassification", arguments->options.misclassification,
+                   "categorical model's misclassification rate p of the sampled labels")
       ->capture_default_str();
   command->add_option("--seed", arguments->options.seed, "seed of the label draws")->capture_default_str();
-  command->add_option("--keyframe-period", arguments->options.keyframePeriod,
-                      "keep one step per period in seconds, composing the odometry in between (0: every step)")
+  command
+      ->add_option("--keyframe-period", arguments->options.keyframePeriod,
+                   "keep one step per period in seconds, composing the odometry in between (0: every step)")
       ->capture_default_str();
   command->add_option("--max-steps", arguments->maxSteps, "keep the first N steps (0: all)")->capture_default_str();
   command
@@ -69,9 +72,10 @@ void addConvertCommand(CLI::App& app) {
                    "standard deviations of the first-pose prior: sx,sy,stheta (3D: sx,sy,sz,srx,sry,srz); default "
                    "0.001 each")
       ->delimiter(',');
-  command->add_option("--map-prior", arguments->options.mapPriorSigma,
-                      "put the landmark ground truth into the header as a prior map with this standard deviation "
-                      "(metres; 0: none)")
+  command
+      ->add_option("--map-prior", arguments->options.mapPriorSigma,
+                   "put the landmark ground truth into the header as a prior map with this standard deviation "
+                   "(metres; 0: none)")
       ->capture_default_str();
   CLI::Option* robot =
       command->add_option("--robot", arguments->options.robot, "mrclam: the robot 1..5")->capture_default_str();

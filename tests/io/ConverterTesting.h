@@ -87,7 +87,9 @@ inline std::size_t expectSameExceptLabels(const MeasurementLog& a, const Measure
       EXPECT_EQ(s.odometry->covariance, t.odometry->covariance) << "step " << k;
     }
     EXPECT_EQ(s.truePose.has_value(), t.truePose.has_value());
-    if (s.truePose && t.truePose) EXPECT_TRUE(samePose(*s.truePose, *t.truePose));
+    if (s.truePose && t.truePose) {
+      EXPECT_TRUE(samePose(*s.truePose, *t.truePose));
+    }
     EXPECT_EQ(s.detections.size(), t.detections.size());
     if (s.detections.size() != t.detections.size()) continue;
     for (std::size_t i = 0; i < s.detections.size(); ++i) {

@@ -40,9 +40,8 @@ void validateConvertOptions(const ConvertOptions& options, int dimension) {
     const std::size_t expected = sigmaCount(dimension);
     if (options.initialPoseSigmas.size() != expected) {
       throw InputError("--initial-pose-sigma needs " + std::to_string(expected) + " values for a " +
-                       std::to_string(dimension) + "D dataset (" +
-                       (dimension == 3 ? "x,y,z,rx,ry,rz" : "x,y,theta") + "), got " +
-                       std::to_string(options.initialPoseSigmas.size()));
+                       std::to_string(dimension) + "D dataset (" + (dimension == 3 ? "x,y,z,rx,ry,rz" : "x,y,theta") +
+                       "), got " + std::to_string(options.initialPoseSigmas.size()));
     }
     for (double sigma : options.initialPoseSigmas) {
       if (!std::isfinite(sigma) || sigma <= 0.0) {
@@ -54,8 +53,8 @@ void validateConvertOptions(const ConvertOptions& options, int dimension) {
 
 std::string describeConvertOptions(const ConvertOptions& options, int dimension) {
   std::ostringstream out;
-  out << "classes=" << options.classes << " misclassification=" << options.misclassification
-      << " seed=" << options.seed << " keyframe-period=";
+  out << "classes=" << options.classes << " misclassification=" << options.misclassification << " seed=" << options.seed
+      << " keyframe-period=";
   if (options.keyframePeriod > 0.0) {
     out << options.keyframePeriod << " s";
   } else {

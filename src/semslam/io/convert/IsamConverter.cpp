@@ -96,9 +96,9 @@ MeasurementLog convertIsam(const std::string& path, const ConvertOptions& option
     havePoses = true;
     const std::vector<NumericRow> rows = readDatasetTable(posesPath, 4, "pose_id x y theta");
     if (rows.size() != raw.steps.size()) {
-      throw InputError(posesPath, 0,
-                       "has " + std::to_string(rows.size()) + " poses, the iSAM file " +
-                           std::to_string(raw.steps.size()));
+      throw InputError(
+          posesPath, 0,
+          "has " + std::to_string(rows.size()) + " poses, the iSAM file " + std::to_string(raw.steps.size()));
     }
     for (std::size_t k = 0; k < rows.size(); ++k) {
       integerField(posesPath, rows[k], 0, "pose id", static_cast<int>(k), static_cast<int>(k));
@@ -120,9 +120,8 @@ MeasurementLog convertIsam(const std::string& path, const ConvertOptions& option
     for (const TimeStep& step : raw.steps) {
       for (const Detection& detection : step.detections) {
         if (ids.count(*detection.truthId) == 0) {
-          throw InputError(path, 0,
-                           "landmark " + std::to_string(*detection.truthId) + " is observed but not in " +
-                               landmarksPath);
+          throw InputError(
+              path, 0, "landmark " + std::to_string(*detection.truthId) + " is observed but not in " + landmarksPath);
         }
       }
     }

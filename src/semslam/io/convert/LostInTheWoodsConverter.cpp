@@ -45,8 +45,7 @@ LitwParameters readParameters(const std::string& path) {
 
 }  // namespace
 
-MeasurementLog convertLostInTheWoods(const std::string& folder, const ConvertOptions& options,
-                                     ConversionStats* stats) {
+MeasurementLog convertLostInTheWoods(const std::string& folder, const ConvertOptions& options, ConversionStats* stats) {
   validateConvertOptions(options, 2);
   const std::string odometryPath = datasetFile(folder, "odometry.txt");
   const std::string truthPath = datasetFile(folder, "groundtruth.txt");
@@ -120,10 +119,10 @@ MeasurementLog convertLostInTheWoods(const std::string& folder, const ConvertOpt
   std::ostringstream source;
   source.precision(12);
   source << "UTIAS Lost in the Woods (" << folder << "), semslam convert utias-lost-in-the-woods: steps at the "
-         << "odometry stamps, unicycle odometry from the previous stamp's (v, omega) with v_var=" << params.velocityVariance
-         << " om_var=" << params.turnRateVariance << ", range-bearing from the laser at d=" << params.d
-         << " m with r_var=" << params.rangeVariance << " b_var=" << params.bearingVariance
-         << ", Vicon truth where valid";
+         << "odometry stamps, unicycle odometry from the previous stamp's (v, omega) with v_var="
+         << params.velocityVariance << " om_var=" << params.turnRateVariance
+         << ", range-bearing from the laser at d=" << params.d << " m with r_var=" << params.rangeVariance
+         << " b_var=" << params.bearingVariance << ", Vicon truth where valid";
   header.source = source.str();
   return finishConversion(std::move(raw), options, stats);
 }

@@ -145,8 +145,9 @@ MeasurementLog convertMrclam(const std::string& folder, const ConvertOptions& op
   source.precision(12);
   source << "UTIAS MRCLAM " << robot << " (" << folder << "), semslam convert mrclam: steps at every odometry and "
          << "measurement stamp, unicycle odometry of the command in force with white input noise intensities "
-         << kMrclamVelocityIntensity << " (m/s)^2 s and " << kMrclamTurnRateIntensity
-         << " (rad/s)^2 s (lateral slip " << kMrclamLateralIntensity << " m^2/s), range-bearing with sigma " << kMrclamRangeSigma << " m, " << kMrclamBearingSigma
+         << kMrclamVelocityIntensity << " (m/s)^2 s and " << kMrclamTurnRateIntensity << " (rad/s)^2 s (lateral slip "
+         << kMrclamLateralIntensity << " m^2/s), range-bearing with sigma " << kMrclamRangeSigma << " m, "
+         << kMrclamBearingSigma
          << " rad, barcodes mapped through Barcodes.dat; clutter kept with truth not-a-landmark: " << robotSightings
          << " sightings of other robots, " << unknownBarcodes << " unknown barcodes; Vicon truth interpolated";
   header.source = source.str();

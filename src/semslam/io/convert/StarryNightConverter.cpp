@@ -83,7 +83,7 @@ Triangulation triangulate(const Calibration& c, double ul, double vl, double ur,
   const double x = (ul - c.cu) * z / c.fu;
   const double y = (vm - c.cv) * z / c.fv;
   const double dzdul = -z / d, dzdur = z / d;
-  Eigen::Matrix<double, 3, 4> J;  // ∂p_c/∂(ul, vl, ur, vr)
+  Eigen::Matrix<double, 3, 4> J;                                                     // ∂p_c/∂(ul, vl, ur, vr)
   J << z / c.fu + (ul - c.cu) / c.fu * dzdul, 0.0, (ul - c.cu) / c.fu * dzdur, 0.0,  //
       (vm - c.cv) / c.fv * dzdul, 0.5 * z / c.fv, (vm - c.cv) / c.fv * dzdur, 0.5 * z / c.fv,  //
       dzdul, 0.0, dzdur, 0.0;
@@ -168,8 +168,7 @@ MeasurementLog convertStarryNight(const std::string& folder, const ConvertOption
                               std::sqrt(calibration.pixelVariance(i) * calibration.pixelVariance(j));
     }
   }
-  const std::vector<NumericRow> rbe =
-      readDatasetTable(rbePath, 9, "k t landmark_id range bearing elevation px py pz");
+  const std::vector<NumericRow> rbe = readDatasetTable(rbePath, 9, "k t landmark_id range bearing elevation px py pz");
   const std::vector<NumericRow> stereo = readDatasetTable(stereoPath, 7, "k t landmark_id ul vl ur vr");
   if (rbe.size() != stereo.size()) {
     throw InputError(stereoPath, 0,

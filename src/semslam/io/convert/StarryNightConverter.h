@@ -38,11 +38,13 @@ namespace semslam {
 
 /// Correlations of the stereo pixel errors (ul, vl, ur, vr), from the 9,410 pixel residuals against ground truth
 /// (the pixels predicted from the Vicon pose and landmark with the calibration): row-major 4×4.
+// clang-format off
 inline constexpr std::array<double, 16> kStereoPixelCorrelation = {
     1.0,    0.1449, 0.8600, 0.1428,  //
     0.1449, 1.0,    0.1580, 0.9875,  //
     0.8600, 0.1580, 1.0,    0.1603,  //
     0.1428, 0.9875, 0.1603, 1.0};
+// clang-format on
 
 MeasurementLog convertStarryNight(const std::string& folder, const ConvertOptions& options,
                                   ConversionStats* stats = nullptr);
