@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <ostream>
 
+#include "semslam/eval/LandmarkMetrics.h"
 #include "semslam/eval/TumFormat.h"
 #include "semslam/io/AtomicFile.h"
 
@@ -21,19 +22,6 @@ std::string number(double value) {
 std::string truthField(const std::optional<int>& truth) {
   if (!truth) return "";
   return *truth == kNotALandmark ? "not-a-landmark" : std::to_string(*truth);
-}
-
-Vector landmarkPosition(const LandmarkState& state) {
-  return std::visit(
-      [](const auto& s) -> Vector {
-        using T = std::decay_t<decltype(s)>;
-        if constexpr (std::is_same_v<T, SE2> || std::is_same_v<T, SE3>) {
-          return s.translation();
-        } else {
-          return s;
-        }
-      },
-      state);
 }
 
 void writePositionColumns(std::ostream& out, const Vector& position) {
@@ -58,7 +46,7 @@ void writeRunFolder(const std::string& directory, const RunOutput& run) {
 
   writeFileAtomically((folder / "landmarks.csv").string(), [&](std::ostream& out) {
     out << "id," << axes << ",class,p_class\n";
-    for (const EstimatedLandmark& landmark : run.landmarks) {
+    for (const RunLandmark& landmark : run.landmarks) {
       out << landmark.id;
       writePositionColumns(out, landmark.position);
       out << "," << landmark.classIndex << ","
@@ -81,7 +69,7 @@ void writeRunFolder(const std::string& directory, const RunOutput& run) {
       const Matrix& c = run.posePositionCovariances[i];
       out << "pose," << i << "," << number(c(0, 0)) << "," << number(c(0, 1)) << "," << number(c(1, 1)) << "\n";
     }
-    for (const EstimatedLandmark& landmark : run.landmarks) {
+    for (const RunLandmark& landmark : run.landmarks) {
       if (!landmark.positionCovariance) continue;
       const Matrix& c = *landmark.positionCovariance;
       out << "landmark," << landmark.id << "," << number(c(0, 0)) << "," << number(c(0, 1)) << ","

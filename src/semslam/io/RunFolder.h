@@ -22,7 +22,8 @@
 
 namespace semslam {
 
-struct EstimatedLandmark {
+/// One row of landmarks.csv and covariances.csv (eval/LandmarkMetrics.h has the evaluation side's landmark).
+struct RunLandmark {
   int id = 0;
   Vector position;               // 2 or 3 numbers
   int classIndex = -1;           // -1: no class belief
@@ -43,7 +44,7 @@ struct RunOutput {
   Trajectory trajectory;
   std::optional<Trajectory> truth;
   std::vector<Matrix> posePositionCovariances;  // empty, or one per trajectory pose
-  std::vector<EstimatedLandmark> landmarks;
+  std::vector<RunLandmark> landmarks;
   std::vector<LandmarkTruth> landmarkTruth;
   std::vector<AssociationRecord> associations;
 };
