@@ -10,6 +10,7 @@
 // graphs, smoothers and the branching hypotheses of the hybrid belief share them instead of copying them.
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "semslam/geometry/Matrix.h"
@@ -42,6 +43,11 @@ class Factor {
 
   /// The factor's chi2 at `values`: ‖r‖², or ρ(‖r‖²) with a robust kernel.
   virtual double chi2(const Values& values) const = 0;
+
+  /// For a factor that is a Gaussian density of its measurement, p(z | X) = exp(−½ chi2(X) − logNormalizer())
+  /// with logNormalizer = ½ d log 2π − log|R| (graph/NoiseModel.h). Factors that are not a normalised Gaussian
+  /// density (robust kernels, mixtures) return std::nullopt; marginal likelihoods and mixture weights need it.
+  virtual std::optional<double> logNormalizer() const { return std::nullopt; }
 
  private:
   std::vector<Key> keys_;

@@ -43,6 +43,12 @@ class NoiseModelFactor : public Factor {
   int errorDimension() const override { return ErrorDim; }
   const SharedNoiseModel& noiseModel() const { return noiseModel_; }
 
+  /// The Gaussian's log-normaliser; none under a robust kernel (the density is then not a normalised Gaussian).
+  std::optional<double> logNormalizer() const override {
+    if (noiseModel_->robustKernel()) return std::nullopt;
+    return noiseModel_->logNormalizer();
+  }
+
   /// e at `values` (no Jacobians), e.g. for reports.
   ErrorVector unwhitenedError(const Values& values) const {
     return evaluate(values, nullptr, std::index_sequence_for<Variables...>{});
