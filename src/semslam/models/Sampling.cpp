@@ -22,6 +22,27 @@ double standardNormal(std::mt19937& rng) {
   return std::sqrt(-2.0 * std::log(1.0 - u1)) * std::cos(2.0 * std::numbers::pi * u2);
 }
 
+Matrix gaussianSquareRoot(const Matrix& covariance) {
+  const Eigen::Index d = covariance.rows();
+  if (covariance.cols() != d) {
+    throw std::invalid_argument("gaussianSquareRoot: covariance is " + std::to_string(covariance.rows()) + "x" +
+                                std::to_string(covariance.cols()));
+  }
+  if (!covariance.allFinite()) throw std::invalid_argument("gaussianSquareRoot: NaN or infinite covariance entry");
+  const double scale = d == 0 ? 0.0 : covariance.cwiseAbs().maxCoeff();
+  if ((covariance - covariance.transpose()).cwiseAbs().maxCoeff() > 1e-9 * std::max(1.0, scale)) {
+    throw std::invalid_argument("gaussianSquareRoot: covariance is not symmetric");
+  }
+  const Matrix symmetric = 0.5 * (covariance + covariance.transpose());
+  Eigen::LLT<Matrix> llt(symmetric);
+  if (llt.info() == Eigen::Success) return llt.matrixL();
+  Eigen::SelfAdjointEigenSolver<Matrix> eigen(symmetric);
+  if (eigen.info() != Eigen::Success || eigen.eigenvalues().minCoeff() < -1e-12 * std::max(1.0, scale)) {
+    throw std::invalid_argument("gaussianSquareRoot: covariance is not positive semi-definite");
+  }
+  return eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal();
+}
+
 Vector sampleGaussian(const Vector& mean, const Matrix& covariance, std::mt19937& rng) {
   const Eigen::Index d = mean.size();
   if (covariance.rows() != d || covariance.cols() != d) {
@@ -29,24 +50,10 @@ Vector sampleGaussian(const Vector& mean, const Matrix& covariance, std::mt19937
                                 std::to_string(covariance.cols()) + ", the mean has " + std::to_string(d) +
                                 " entries");
   }
-  if (!covariance.allFinite() || !mean.allFinite()) {
-    throw std::invalid_argument("sampleGaussian: NaN or infinite entry in the mean or covariance");
-  }
-  const double scale = d == 0 ? 0.0 : covariance.cwiseAbs().maxCoeff();
-  if ((covariance - covariance.transpose()).cwiseAbs().maxCoeff() > 1e-9 * std::max(1.0, scale)) {
-    throw std::invalid_argument("sampleGaussian: covariance is not symmetric");
-  }
+  if (!mean.allFinite()) throw std::invalid_argument("sampleGaussian: NaN or infinite entry in the mean");
   Vector n(d);
   for (Eigen::Index i = 0; i < d; ++i) n(i) = standardNormal(rng);
-  const Matrix symmetric = 0.5 * (covariance + covariance.transpose());
-  Eigen::LLT<Matrix> llt(symmetric);
-  if (llt.info() == Eigen::Success) return mean + llt.matrixL() * n;
-  Eigen::SelfAdjointEigenSolver<Matrix> eigen(symmetric);
-  if (eigen.info() != Eigen::Success || eigen.eigenvalues().minCoeff() < -1e-12 * std::max(1.0, scale)) {
-    throw std::invalid_argument("sampleGaussian: covariance is not positive semi-definite");
-  }
-  const Vector root = eigen.eigenvalues().cwiseMax(0.0).cwiseSqrt();
-  return mean + eigen.eigenvectors() * root.asDiagonal() * n;
+  return mean + gaussianSquareRoot(covariance) * n;
 }
 
 }  // namespace semslam

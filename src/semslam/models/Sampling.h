@@ -28,6 +28,10 @@ double uniform01(std::mt19937& rng);
 /// A standard normal draw (Box–Muller).
 double standardNormal(std::mt19937& rng);
 
+/// L with L Lᵀ = Σ (Cholesky, or the eigen form above for a semi-definite Σ), for drawing many samples of one
+/// Gaussian: x = μ + L n with n of standardNormal() draws.
+Matrix gaussianSquareRoot(const Matrix& covariance);
+
 /// A draw from N(mean, covariance); covariance may be positive semi-definite.
 Vector sampleGaussian(const Vector& mean, const Matrix& covariance, std::mt19937& rng);
 
