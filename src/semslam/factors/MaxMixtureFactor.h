@@ -1,0 +1,60 @@
+#pragma once
+// MaxMixtureFactor: a max-mixture of Gaussian factors (Olson & Agarwal, "Inference on networks of mixtures for
+// robust robot mapping", IJRR 2013), used by paper B (sec. IV-C) to max-marginalise a detection's data association:
+// one component per candidate landmark, plus an optional broad null-hypothesis component.
+//
+// Math. Component i is a Gaussian factor f_i with weight w_i > 0, whitened error r_i (dimension m_i) and
+// log-normaliser n_i (Factor::logNormalizer). The mixture's negative log-likelihood is approximated by its
+// largest term:
+//     −log Σ_i w_i p_i(z | X)  ≈  min_i [ ½‖r_i(X)‖² + c_i ],   c_i = n_i − log w_i.
+// At every linearisation the factor picks the component i* attaining the minimum (ties: the lowest index) and
+// reports the whitened error
+//     r(X) = [ r_i*(X) ; 0 (padding to m_max) ; sqrt(2 (c_i* − c_min)) ],   c_min = min_j c_j,
+// so that ‖r‖² = 2 (min_i [½‖r_i‖² + c_i] − c_min): the cost is the max-mixture's negative log-likelihood up to
+// a constant, with every component's normalisation explicit (a broad null hypothesis pays for its width), and it
+// is continuous in X where the choice switches (a minimum of continuous functions). The last entry is constant in
+// X, so the Jacobians are those of r_i* (zero columns for keys the chosen component does not touch). The error
+// dimension is m_max + 1.
+//
+// Keys: the union of the components' keys, in first-appearance order. The factor is immutable: re-weighting
+// means building a new one (Smoother::replaceFactor).
+//
+// Invariants: at least one component; weights finite and > 0; every component a normalised Gaussian factor
+// (logNormalizer present); otherwise std::invalid_argument.
+
+#include <vector>
+
+#include "semslam/graph/Factor.h"
+
+namespace semslam {
+
+class MaxMixtureFactor final : public Factor {
+ public:
+  struct Component {
+    FactorPtr factor;
+    double weight = 1.0;
+  };
+
+  explicit MaxMixtureFactor(std::vector<Component> components);
+
+  const std::vector<Component>& components() const { return components_; }
+  int errorDimension() const override { return maxComponentDimension_ + 1; }
+
+  /// The index of the component the mixture uses at `values` (the argmin above).
+  int activeComponent(const Values& values) const;
+
+  void linearize(const Values& values, LinearizedFactor& out) const override;
+  double chi2(const Values& values) const override;
+
+ private:
+  static std::vector<Key> unionOfKeys(const std::vector<Component>& components);
+  /// The chosen component and its chi2 (‖r_i‖²).
+  std::pair<int, double> choose(const Values& values) const;
+
+  std::vector<Component> components_;
+  std::vector<double> constants_;  // c_i − c_min ≥ 0
+  int maxComponentDimension_ = 0;
+  std::vector<std::vector<int>> keySlots_;  // [component][its key] → index in keys()
+};
+
+}  // namespace semslam

@@ -1,0 +1,125 @@
+// MaxMixtureFactor (paper B, sec. IV-C): choice of component, explicit normalisation, continuity at a switch,
+// Jacobians on both sides of a switch, and the null hypothesis.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "semslam/factors/MaxMixtureFactor.h"
+#include "semslam/factors/PriorFactor.h"
+#include "semslam/factors/RangeBearingFactor.h"
+#include "semslam/graph/NoiseModel.h"
+#include "support/FactorTesting.h"
+
+using namespace semslam;
+using semslam::test::expectJacobiansMatch;
+
+namespace {
+
+const Key kRobot = poseKey(0);
+const Key kNear = landmarkKey(0);
+const Key kFar = landmarkKey(1);
+
+FactorPtr rangeBearing(Key landmark, const Vector2& z, double sigmaScale = 1.0) {
+  return std::make_shared<const RangeBearingFactor<Point2>>(
+      kRobot, landmark, z, NoiseModel::fromSigmas(Vector2(0.1, 0.02) * sigmaScale));
+}
+
+/// A detection of two candidate landmarks at (4, 0) and (4, 1): the robot's y decides which one it sees.
+Values twoLandmarks(double robotY) {
+  Values values;
+  values.insert(kRobot, SE2(0.0, robotY, 0.0));
+  values.insert(kNear, Point2(4.0, 0.0));
+  values.insert(kFar, Point2(4.0, 1.0));
+  return values;
+}
+
+/// −log(w_i p_i(z | X)) of one Gaussian component, from its chi2 and normaliser.
+double negativeLogComponent(const Factor& factor, double weight, const Values& values) {
+  return 0.5 * factor.chi2(values) + *factor.logNormalizer() - std::log(weight);
+}
+
+}  // namespace
+
+TEST(MaxMixtureFactor, KeysAreTheUnionOfTheComponentsKeys) {
+  const Vector2 z(4.0, 0.0);
+  const MaxMixtureFactor mixture({{rangeBearing(kNear, z), 0.5}, {rangeBearing(kFar, z), 0.5}});
+  EXPECT_EQ(mixture.keys(), (std::vector<Key>{kRobot, kNear, kFar}));
+  EXPECT_EQ(mixture.errorDimension(), 3);
+}
+
+TEST(MaxMixtureFactor, CostIsTheLargestComponentsNegativeLogLikelihoodUpToAConstant) {
+  const Vector2 z(4.0, 0.0);
+  const std::vector<MaxMixtureFactor::Component> components = {{rangeBearing(kNear, z), 0.7},
+                                                               {rangeBearing(kFar, z, 3.0), 0.3}};
+  const MaxMixtureFactor mixture(components);
+  // The constant is min_i c_i: recover it at one point, then it must hold everywhere.
+  double constant = std::nan("");
+  for (double y : {-1.0, -0.2, 0.0, 0.3, 0.5, 0.8, 1.0, 1.7}) {
+    const Values values = twoLandmarks(y);
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& c : components) best = std::min(best, negativeLogComponent(*c.factor, c.weight, values));
+    const double offset = best - 0.5 * mixture.chi2(values);
+    if (std::isnan(constant)) constant = offset;
+    EXPECT_NEAR(offset, constant, 1e-9) << "y = " << y;
+    LinearizedFactor linearized;
+    mixture.linearize(values, linearized);
+    EXPECT_NEAR(linearized.whitenedError.squaredNorm(), mixture.chi2(values), 1e-9);
+  }
+}
+
+TEST(MaxMixtureFactor, SwitchesComponentAndStaysContinuousAtTheSwitch) {
+  const Vector2 z(4.0, 0.0);
+  const MaxMixtureFactor mixture({{rangeBearing(kNear, z), 0.5}, {rangeBearing(kFar, z), 0.5}});
+  EXPECT_EQ(mixture.activeComponent(twoLandmarks(0.0)), 0);
+  EXPECT_EQ(mixture.activeComponent(twoLandmarks(1.0)), 1);
+  // Bisect for the switch, then the cost on both sides must agree to the bisection's resolution.
+  double below = 0.0, above = 1.0;
+  for (int i = 0; i < 60; ++i) {
+    const double middle = 0.5 * (below + above);
+    (mixture.activeComponent(twoLandmarks(middle)) == 0 ? below : above) = middle;
+  }
+  EXPECT_NEAR(mixture.chi2(twoLandmarks(below)), mixture.chi2(twoLandmarks(above)), 1e-6);
+  EXPECT_NEAR(0.5 * (below + above), 0.5, 1e-6);  // equal weights and noise: the switch is half-way
+}
+
+TEST(MaxMixtureFactor, JacobiansMatchFiniteDifferencesOnBothSidesOfASwitch) {
+  const Vector2 z(4.0, 0.05);
+  const MaxMixtureFactor mixture({{rangeBearing(kNear, z), 0.6}, {rangeBearing(kFar, z, 2.0), 0.4}});
+  for (double y : {-0.5, 0.2, 0.45, 0.7, 1.2}) {
+    const Values values = twoLandmarks(y);
+    // Away from the switch itself (within a finite-difference step the choice must not change).
+    const int here = mixture.activeComponent(values);
+    Values nudged = values;
+    nudged.update(kRobot, SE2(0.0, y + 1e-5, 0.0));
+    if (mixture.activeComponent(nudged) != here) continue;
+    expectJacobiansMatch(mixture, values);
+    LinearizedFactor linearized;
+    mixture.linearize(values, linearized);
+    const int untouched = here == 0 ? 2 : 1;  // the other candidate's key gets a zero Jacobian
+    EXPECT_TRUE(linearized.jacobians[untouched].isZero(0.0)) << "y = " << y;
+  }
+  EXPECT_EQ(mixture.activeComponent(twoLandmarks(-0.5)), 0);
+  EXPECT_EQ(mixture.activeComponent(twoLandmarks(1.2)), 1);
+}
+
+TEST(MaxMixtureFactor, NullHypothesisWinsForAnOutlierAndLosesForAnInlier) {
+  // Paper B's null hypothesis: the same measurement with a broad Gaussian (100 sigma) and weight 0.1.
+  const Values values = twoLandmarks(0.0);
+  auto mixtureFor = [](const Vector2& z) {
+    return MaxMixtureFactor({{rangeBearing(kNear, z), 0.9}, {rangeBearing(kNear, z, 100.0), 0.1}});
+  };
+  EXPECT_EQ(mixtureFor(Vector2(4.05, 0.01)).activeComponent(values), 0);  // inlier: within 1 sigma
+  EXPECT_EQ(mixtureFor(Vector2(7.0, 0.8)).activeComponent(values), 1);    // outlier: 30 sigma off in range
+}
+
+TEST(MaxMixtureFactor, RejectsBadComponents) {
+  const Vector2 z(4.0, 0.0);
+  EXPECT_THROW(MaxMixtureFactor({}), std::invalid_argument);
+  EXPECT_THROW(MaxMixtureFactor({{rangeBearing(kNear, z), 0.0}}), std::invalid_argument);
+  EXPECT_THROW(MaxMixtureFactor({{rangeBearing(kNear, z), std::nan("")}}), std::invalid_argument);
+  const auto robust = std::make_shared<const PriorFactor<Point2>>(
+      kNear, Point2(0, 0), NoiseModel::isotropic(2, 1.0)->withRobustKernel(std::make_shared<HuberKernel>(1.0)));
+  EXPECT_THROW(MaxMixtureFactor({{robust, 1.0}}), std::invalid_argument);
+}
