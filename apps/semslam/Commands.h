@@ -13,5 +13,6 @@ void addEvalCommand(CLI::App& app);
 void addCheckCommand(CLI::App& app);
 void addSimulateCommand(CLI::App& app);
 void addConvertCommand(CLI::App& app);
+void addRunCommand(CLI::App& app);
 
 }  // namespace semslam::cli

@@ -1,0 +1,334 @@
+#include "semslam/slam/SemanticSlam.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "semslam/association/MarginalLikelihood.h"
+#include "semslam/factors/MaxMixtureFactor.h"
+#include "semslam/solve/BatchSmoother.h"
+
+namespace semslam {
+namespace {
+
+constexpr double kGaugeSigma = 1e-6;
+
+/// Normalises log-weights into probabilities (log-sum-exp), in place.
+std::vector<double> normalizeLogWeights(const std::vector<double>& logWeights) {
+  const double maximum = *std::max_element(logWeights.begin(), logWeights.end());
+  std::vector<double> weights;
+  double sum = 0.0;
+  for (double w : logWeights) {
+    weights.push_back(std::isfinite(maximum) ? std::exp(w - maximum) : 1.0);
+    sum += weights.back();
+  }
+  for (double& w : weights) w /= sum;
+  return weights;
+}
+
+int argmax(const std::vector<double>& values) {
+  return static_cast<int>(std::max_element(values.begin(), values.end()) - values.begin());
+}
+
+Pose toPose(const Value& value) {
+  if (const auto* se2 = std::get_if<SE2>(&value)) return *se2;
+  return std::get<SE3>(value);
+}
+
+LandmarkState toLandmarkState(const Value& value) {
+  return std::visit(
+      [](const auto& v) -> LandmarkState {
+        using V = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<V, SO2> || std::is_same_v<V, SO3>) {
+          throw std::logic_error("a landmark cannot be a rotation");
+        } else {
+          return v;
+        }
+      },
+      value);
+}
+
+}  // namespace
+
+SemanticSlam::SemanticSlam(const LogHeader& header, SemanticSlamOptions options)
+    : header_(header),
+      options_(std::move(options)),
+      factory_(header),
+      gate_(options_.gateConfidence),
+      smoother_(options_.smoother ? options_.smoother() : std::make_unique<BatchSmoother>()) {
+  if (!(options_.nullWeight > 0.0 && options_.nullWeight < 1.0)) {
+    throw std::invalid_argument("null-hypothesis weight must be in (0, 1)");
+  }
+  if (!(options_.nullSigmaScale >= 1.0)) throw std::invalid_argument("null-hypothesis sigma scale must be >= 1");
+  if (options_.emWindow < 1 || options_.emIterations < 0) throw std::invalid_argument("bad EM window or iterations");
+}
+
+int SemanticSlam::addLandmark(const Value& value, std::optional<int> truthId, Values& values) {
+  const int index = landmarks();
+  const Key key = landmarkKey(static_cast<std::uint64_t>(index));
+  landmarks_.push_back({key, truthId, ClassBelief(header_.classes)});
+  values.insert(key, value);
+  return index;
+}
+
+void SemanticSlam::addFirstPose(const TimeStep& step, FactorGraph& factors, Values& values) {
+  const Key pose = poseKey(0);
+  values.insert(pose, factory_.initialPose(header_));
+  if (header_.initialPose) {
+    factors.add(factory_.posePriorFactor(pose, *header_.initialPose));
+  } else {
+    PosePrior gauge{toPose(factory_.initialPose(header_)),
+                    Matrix::Identity(factory_.poseTangentDimension(), factory_.poseTangentDimension()) *
+                        (kGaugeSigma * kGaugeSigma)};
+    factors.add(factory_.posePriorFactor(pose, gauge));
+  }
+  for (const LandmarkPrior& prior : header_.landmarkPriors) {
+    const int index = addLandmark(factory_.landmarkValue(prior.mean), prior.id, values);
+    factors.add(factory_.landmarkPriorFactor(landmarks_[index].key, prior));
+  }
+  (void)step;
+}
+
+void SemanticSlam::addStep(const TimeStep& step) {
+  // 1. Propagate.
+  const int k = steps();
+  const Key pose = poseKey(static_cast<std::uint64_t>(k));
+  FactorGraph propagation;
+  Values newValues;
+  if (k == 0) {
+    if (step.odometry) throw std::invalid_argument("the first step must not have odometry");
+    addFirstPose(step, propagation, newValues);
+  } else {
+    if (!step.odometry) throw std::invalid_argument("step " + std::to_string(k) + " has no odometry");
+    const Key previous = poseKeys_.back();
+    newValues.insert(pose, factory_.predictPose(smoother_->estimate().value(previous), *step.odometry));
+    propagation.add(factory_.odometryFactor(previous, pose, *step.odometry));
+  }
+  poseKeys_.push_back(pose);
+  times_.push_back(step.time);
+  truePoses_.push_back(step.truePose);
+  firstRecordOfStep_.push_back(records_.size());
+  const bool known = options_.strategy == AssociationStrategy::Known;
+  if (step.detections.empty() || known || landmarks_.empty()) {
+    // No marginals needed before associating: propagate and associate in one solve.
+  } else {
+    smoother_->update(propagation, newValues);
+    propagation = FactorGraph();
+    newValues = Values();
+  }
+
+  // 2. Candidates and weights, all against the marginal of the propagated estimate.
+  std::optional<JointMarginal> marginal;
+  if (!known && !landmarks_.empty() && !step.detections.empty()) {
+    std::vector<Key> keys = {pose};
+    for (const Landmark& landmark : landmarks_) keys.push_back(landmark.key);
+    marginal = smoother_->jointMarginal(keys);
+  }
+  FactorGraph associations = propagation;
+  Values values = newValues;
+  const int landmarksBeforeStep = landmarks();
+  for (std::size_t i = 0; i < step.detections.size(); ++i) {
+    DetectionRecord record;
+    record.step = k;
+    record.detection = static_cast<int>(i);
+    record.measurement = step.detections[i];
+    record.truth = step.detections[i].truthId;
+    record.semanticLikelihoods = semanticLikelihoods(header_, step.detections[i]);
+    const Value& robot = values.exists(pose) ? values.value(pose) : smoother_->estimate().value(pose);
+
+    if (known) {
+      if (record.truth && *record.truth != kNotALandmark) {
+        int index = -1;
+        for (int j = 0; j < landmarks(); ++j) {
+          if (landmarks_[j].truthId == *record.truth) index = j;
+        }
+        if (index < 0) index = addLandmark(factory_.initialLandmark(record.measurement, robot), *record.truth, values);
+        record.knownLandmark = index;
+        associations.add(factory_.detectionFactor(pose, landmarks_[index].key, record.measurement));
+        landmarks_[index].classBelief.update(record.semanticLikelihoods);
+      }
+    } else {
+      if (marginal) findCandidates(*marginal, landmarksBeforeStep, record);
+      if (record.candidates.empty()) {
+        const int index = addLandmark(factory_.initialLandmark(record.measurement, robot), std::nullopt, values);
+        record.createdLandmark = index;
+        associations.add(factory_.detectionFactor(pose, landmarks_[index].key, record.measurement));
+        landmarks_[index].classBelief.update(record.semanticLikelihoods);
+      } else {
+        for (const FactorPtr& factor : associationFactors(record)) associations.add(factor);
+        for (std::size_t c = 0; c < record.candidates.size(); ++c) {
+          landmarks_[record.candidates[c]].classBelief.update(record.semanticLikelihoods, record.weights[c]);
+        }
+      }
+    }
+    records_.push_back(std::move(record));
+  }
+
+  // 4. Solve, and remember which smoother factors belong to which detection (they follow any propagation ones).
+  const std::vector<FactorIndex> indices = smoother_->update(associations, values);
+  std::size_t next = propagation.size();
+  for (std::size_t r = firstRecordOfStep_.back(); r < records_.size(); ++r) {
+    DetectionRecord& record = records_[r];
+    std::size_t count = 0;
+    if (record.createdLandmark || record.knownLandmark || options_.strategy != AssociationStrategy::Gpda) {
+      count = (record.createdLandmark || record.knownLandmark || !record.candidates.empty()) ? 1 : 0;
+    } else {
+      count = record.candidates.size();  // gpda: one per candidate
+    }
+    for (std::size_t c = 0; c < count; ++c) record.factors.push_back(indices.at(next++));
+  }
+  if (options_.strategy == AssociationStrategy::Gpda && options_.emIterations > 0) {
+    const int firstStep = std::max(0, k + 1 - options_.emWindow);
+    expectationMaximization(firstRecordOfStep_[firstStep], options_.emIterations);
+  }
+}
+
+void SemanticSlam::findCandidates(const JointMarginal& marginal, int landmarkCount, DetectionRecord& record) const {
+  const Key pose = poseKeys_.back();
+  const Values& estimate = smoother_->estimate();
+  std::vector<double> logWeights;
+  for (int j = 0; j < landmarkCount; ++j) {
+    const Landmark& landmark = landmarks_[j];
+    const std::vector<FactorPtr> factor = {factory_.detectionFactor(pose, landmark.key, record.measurement)};
+    const JointMarginal pair({pose, landmark.key},
+                             {factory_.poseTangentDimension(), factory_.landmarkTangentDimension()},
+                             [&] {
+                               const int p = factory_.poseTangentDimension(), l = factory_.landmarkTangentDimension();
+                               Matrix joint(p + l, p + l);
+                               joint.topLeftCorner(p, p) = marginal.at(pose);
+                               joint.topRightCorner(p, l) = marginal.block(pose, landmark.key);
+                               joint.bottomLeftCorner(l, p) = joint.topRightCorner(p, l).transpose();
+                               joint.bottomRightCorner(l, l) = marginal.at(landmark.key);
+                               return joint;
+                             }());
+    const LinearizedLikelihood geometric = linearizedLikelihood(factor, estimate, pair);
+    if (!gate_.accepts(geometric)) continue;
+    const double semantic = landmark.classBelief.predictive(record.semanticLikelihoods);
+    record.candidates.push_back(j);
+    logWeights.push_back(geometric.logLikelihood + std::log(semantic));  // (B, sec. IV-B)
+  }
+  if (!record.candidates.empty()) record.weights = normalizeLogWeights(logWeights);
+}
+
+FactorPtr SemanticSlam::gpdaFactor(const DetectionRecord& record, int landmark, double weight) const {
+  // Information scaled by the weight: standard deviations divided by √w.
+  return factory_.detectionFactor(poseKeys_[record.step], landmarks_[landmark].key, record.measurement,
+                                  1.0 / std::sqrt(std::max(weight, options_.minimumGpdaWeight)));
+}
+
+std::vector<FactorPtr> SemanticSlam::associationFactors(DetectionRecord& record) const {
+  const Key pose = poseKeys_[record.step];
+  const int best = record.candidates[argmax(record.weights)];
+  switch (options_.strategy) {
+    case AssociationStrategy::MaximumLikelihood:
+      return {factory_.detectionFactor(pose, landmarks_[best].key, record.measurement)};
+    case AssociationStrategy::Gpda: {
+      std::vector<FactorPtr> factors;
+      for (std::size_t c = 0; c < record.candidates.size(); ++c) {
+        factors.push_back(gpdaFactor(record, record.candidates[c], record.weights[c]));
+      }
+      return factors;
+    }
+    case AssociationStrategy::MaxMixture:
+    case AssociationStrategy::MaxMixtureNullHypothesis: {
+      const bool withNull = options_.strategy == AssociationStrategy::MaxMixtureNullHypothesis;
+      std::vector<MaxMixtureFactor::Component> components;
+      for (std::size_t c = 0; c < record.candidates.size(); ++c) {
+        components.push_back({factory_.detectionFactor(pose, landmarks_[record.candidates[c]].key, record.measurement),
+                              record.weights[c] * (withNull ? 1.0 - options_.nullWeight : 1.0)});
+      }
+      if (withNull) {
+        components.push_back({factory_.detectionFactor(pose, landmarks_[best].key, record.measurement,
+                                                       options_.nullSigmaScale),
+                              options_.nullWeight});
+      }
+      record.mixture = std::make_shared<const MaxMixtureFactor>(std::move(components));
+      return {record.mixture};
+    }
+    case AssociationStrategy::Known: break;
+  }
+  throw std::logic_error("associationFactors: strategy without candidates");
+}
+
+bool SemanticSlam::reweight(DetectionRecord& record) {
+  if (record.candidates.size() < 2) return false;
+  const Values& estimate = smoother_->estimate();
+  const Key pose = poseKeys_[record.step];
+  std::vector<double> logWeights;
+  for (int landmark : record.candidates) {
+    const std::vector<FactorPtr> factor = {factory_.detectionFactor(pose, landmarks_[landmark].key, record.measurement)};
+    const int p = factory_.poseTangentDimension(), l = factory_.landmarkTangentDimension();
+    const JointMarginal pointEstimate({pose, landmarks_[landmark].key}, {p, l}, Matrix::Zero(p + l, p + l));
+    const double semantic = landmarks_[landmark].classBelief.predictive(record.semanticLikelihoods);
+    logWeights.push_back(linearizedLikelihood(factor, estimate, pointEstimate).logLikelihood + std::log(semantic));
+  }
+  const std::vector<double> weights = normalizeLogWeights(logWeights);
+  bool changed = false;
+  for (std::size_t c = 0; c < weights.size(); ++c) {
+    const double before = std::max(record.weights[c], options_.minimumGpdaWeight);
+    const double after = std::max(weights[c], options_.minimumGpdaWeight);
+    if (std::abs(std::log(after / before)) > 1e-3) {
+      smoother_->replaceFactor(record.factors[c], gpdaFactor(record, record.candidates[c], weights[c]));
+      changed = true;
+    }
+  }
+  record.weights = weights;
+  return changed;
+}
+
+void SemanticSlam::expectationMaximization(std::size_t firstRecord, int iterations) {
+  for (int iteration = 0; iteration < iterations; ++iteration) {
+    bool changed = false;
+    for (std::size_t r = firstRecord; r < records_.size(); ++r) {
+      if (!records_[r].createdLandmark && !records_[r].candidates.empty()) changed |= reweight(records_[r]);
+    }
+    if (!changed) return;
+    smoother_->update();
+  }
+}
+
+void SemanticSlam::finish() {
+  if (options_.strategy == AssociationStrategy::Gpda) expectationMaximization(0, 10);
+}
+
+std::pair<std::optional<int>, double> SemanticSlam::chosenAssociation(const DetectionRecord& record) const {
+  if (record.knownLandmark) return {*record.knownLandmark, 1.0};
+  if (record.createdLandmark) return {*record.createdLandmark, 1.0};
+  if (record.candidates.empty()) return {std::nullopt, 1.0};  // `known`: clutter, no factor
+  if (record.mixture) {
+    const auto& mixture = static_cast<const MaxMixtureFactor&>(*record.mixture);
+    const int active = mixture.activeComponent(smoother_->estimate());
+    if (active >= static_cast<int>(record.candidates.size())) return {std::nullopt, options_.nullWeight};
+    const double scale = options_.strategy == AssociationStrategy::MaxMixtureNullHypothesis ? 1.0 - options_.nullWeight : 1.0;
+    return {record.candidates[active], record.weights[active] * scale};
+  }
+  const int best = argmax(record.weights);
+  return {record.candidates[best], record.weights[best]};
+}
+
+RunResult SemanticSlam::result(bool withPoseCovariances) const {
+  RunResult result;
+  result.method = strategyName(options_.strategy);
+  const Values& estimate = smoother_->estimate();
+  for (Key pose : poseKeys_) {
+    result.poses.push_back(toPose(estimate.value(pose)));
+    if (withPoseCovariances) result.poseCovariances.push_back(smoother_->marginalCovariance(pose));
+  }
+  result.associations.resize(poseKeys_.size());
+  for (std::size_t k = 0; k < poseKeys_.size(); ++k) {
+    const std::size_t end = k + 1 < poseKeys_.size() ? firstRecordOfStep_[k + 1] : records_.size();
+    for (std::size_t r = firstRecordOfStep_[k]; r < end; ++r) {
+      result.associations[k].push_back(chosenAssociation(records_[r]).first);
+    }
+  }
+  for (int j = 0; j < landmarks(); ++j) {
+    const bool hasClasses = header_.semantic != SemanticKind::None;
+    result.landmarks.push_back({j, toLandmarkState(estimate.value(landmarks_[j].key)),
+                                hasClasses ? landmarks_[j].classBelief.probabilities() : Vector()});
+  }
+  return result;
+}
+
+}  // namespace semslam
