@@ -69,8 +69,8 @@ TEST(AssociationGate, ThresholdsAreChiSquareQuantiles) {
   const AssociationGate paper(AssociationGate::kPaperConfidence);
   EXPECT_NEAR(paper.threshold(2), -2.0 * std::log(0.1), 1e-9);  // χ²₂ quantile: −2 log(1 − p)
   const AssociationGate ours;
-  EXPECT_NEAR(ours.threshold(2), -2.0 * std::log(0.001), 1e-9);
-  EXPECT_NEAR(ours.threshold(20), 45.3147, 1e-3);  // beyond the precomputed table
+  EXPECT_NEAR(ours.threshold(2), -2.0 * std::log(1e-6), 1e-6);
+  EXPECT_NEAR(AssociationGate(0.999).threshold(20), 45.3147, 1e-3);  // beyond the precomputed table
   LinearizedLikelihood likelihood;
   likelihood.dimension = 2;
   likelihood.innovationChi2 = 5.0;
