@@ -1,0 +1,133 @@
+"""docs/results.md sections of paper B's semantic max-mixtures (issue 5); used by make_results.py.
+
+Every run goes through the `semslam` tool; each table row comes from the run's metrics.json, and each section
+prints the commands that produced it.
+"""
+import json
+import os
+import subprocess
+import sys
+
+METHODS = ["known", "ml", "gpda", "mm", "mm-nh"]
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def _run(command):
+    result = subprocess.run(command, capture_output=True, text=True)
+    if result.returncode != 0:
+        sys.exit(f"results_max_mixtures.py: {' '.join(command)} failed:\n{result.stdout}{result.stderr}")
+    return result.stdout
+
+
+def _metrics(folder):
+    with open(os.path.join(folder, "metrics.json")) as f:
+        return json.load(f)
+
+
+def _log_duration(log):
+    first = last = None
+    with open(log) as f:
+        for line in f:
+            record = json.loads(line)
+            if "time" in record:
+                first = record["time"] if first is None else first
+                last = record["time"]
+    return (last - first) if first is not None else float("nan")
+
+
+def _number(value, digits=4):
+    return "–" if value is None else f"{value:.{digits}f}"
+
+
+def _error_table(runs, duration):
+    lines = ["| method | ATE max [m] | ATE mean | ATE median | ATE RMSE | rot max [rad] | rot mean | rot median | "
+             "rot RMSE | DA accuracy | landmarks (true) | NEES mean (95 % band) | time [s] | real-time factor |",
+             "|---|" + "---|" * 13]
+    for method, folder in runs:
+        m = _metrics(folder)
+        nees = (f"{_number(m.get('nees_mean'), 2)} ({_number(m.get('nees_lower'), 2)}–"
+                f"{_number(m.get('nees_upper'), 2)})")
+        lines.append(
+            f"| {method} | {_number(m.get('ate_max'))} | {_number(m.get('ate_mean'))} | {_number(m.get('ate_median'))} | "
+            f"{_number(m.get('ate_rmse'))} | {_number(m.get('rot_max'))} | {_number(m.get('rot_mean'))} | "
+            f"{_number(m.get('rot_median'))} | {_number(m.get('rot_rmse'))} | {_number(m.get('da_accuracy'))} | "
+            f"{m.get('landmarks_estimated')} ({m.get('landmarks_true')}) | {nees} | {_number(m.get('time_s'), 1)} | "
+            f"{_number(duration / m['time_s'], 1) if m.get('time_s') else '–'} |")
+    return lines
+
+
+def _methods_on_log(semslam, log, name, scratch, figures, title, extra=()):
+    """Runs every method on `log`; returns the table lines, the commands and the trajectory figure."""
+    runs = []
+    for method in METHODS:
+        folder = os.path.join(scratch, name, method)
+        _run([semslam, "run", "--method", method, "--in", log, "--out", folder, *extra])
+        runs.append((method, folder))
+    figure = os.path.join(figures, f"{name}_methods.png")
+    _run([sys.executable, os.path.join(HERE, "plot_methods.py"), *[f for _, f in runs], "--out", figure,
+          "--title", title])
+    return _error_table(runs, _log_duration(log)), figure
+
+
+def max_mixture_sections(semslam, data, scratch, shown):
+    figures = os.path.join("docs", "figures")
+    os.makedirs(figures, exist_ok=True)
+    lines = ["## Semantic max-mixtures and baselines (issue 5, paper B)", "",
+             "Every method of paper B on one front end (docs/max-mixtures.md): `known` association, maximum likelihood "
+             "(`ml`), EM soft association (`gpda`), max-mixtures (`mm`) and max-mixtures with a null hypothesis "
+             "(`mm-nh`), default gate 1 − 10⁻⁶, batch smoother. Errors after SE(2)/SE(3) alignment (evo's APE); "
+             "DA accuracy over the detections with ground truth (docs/metrics.md); real-time factor = data duration "
+             "over processing time, on one core of this machine.", ""]
+
+    # Lost in the Woods (Tables I and II analog).
+    litw = os.path.join(data, "utias-lost-in-the-woods")
+    if os.path.isdir(litw):
+        log = os.path.join(scratch, "litw.jsonl")
+        convert = [semslam, "convert", "utias-lost-in-the-woods", litw, "--out", log, "--classes", "3",
+                   "--misclassification", "0.1", "--keyframe-period", "1"]
+        _run(convert)
+        table, figure = _methods_on_log(semslam, log, "litw", scratch, figures, "Lost in the Woods, 1 s keyframes")
+        lines += ["### Lost in the Woods (paper B, Tables I and II analog)", "", "```sh",
+                  shown(convert).replace(log, "litw.jsonl"),
+                  "for m in known ml gpda mm mm-nh; do build/bin/semslam run --method $m --in litw.jsonl --out litw/$m; done",
+                  f"python3 python/plot_methods.py litw/* --out {figure}", "```", ""] + table + [
+                  "", f"![trajectories]({os.path.relpath(figure, 'docs')})", ""]
+        gate_lines = ["Gate confidence for `mm-nh` on the same log (paper B used 0.9):", "",
+                      "| gate | DA accuracy | landmarks (true) | ATE RMSE [m] | time [s] |", "|---|---|---|---|---|"]
+        for gate in ["0.9", "0.999", "0.999999"]:
+            folder = os.path.join(scratch, "litw-gate", gate)
+            _run([semslam, "run", "--method", "mm-nh", "--gate", gate, "--in", log, "--out", folder,
+                  "--no-covariances"])
+            m = _metrics(folder)
+            gate_lines.append(f"| {gate} | {_number(m.get('da_accuracy'))} | {m.get('landmarks_estimated')} "
+                              f"({m.get('landmarks_true')}) | {_number(m.get('ate_rmse'))} | "
+                              f"{_number(m.get('time_s'), 1)} |")
+        lines += gate_lines + ["", "`build/bin/semslam run --method mm-nh --gate G --in litw.jsonl --out DIR "
+                               "--no-covariances`", ""]
+    else:
+        lines += ["### Lost in the Woods", "", "dataset absent", ""]
+
+    # 3D: Starry Night and the semantic simulator over KITTI 00.
+    starry = os.path.join(data, "utias-starry-night")
+    if os.path.isdir(starry):
+        log = os.path.join(scratch, "starry.jsonl")
+        convert = [semslam, "convert", "utias-starry-night", starry, "--out", log, "--classes", "3",
+                   "--misclassification", "0.1"]
+        _run(convert)
+        table, figure = _methods_on_log(semslam, log, "starry", scratch, figures, "Starry Night (3D, from above)")
+        lines += ["### Starry Night (3D, range-bearing-elevation)", "", "```sh", shown(convert).replace(log, "starry.jsonl"),
+                  "for m in known ml gpda mm mm-nh; do build/bin/semslam run --method $m --in starry.jsonl --out starry/$m; done",
+                  "```", ""] + table + ["", f"![trajectories]({os.path.relpath(figure, 'docs')})", ""]
+    kitti = os.path.join(data, "kitti-odometry-poses", "00.txt")
+    if os.path.exists(kitti):
+        log = os.path.join(scratch, "kitti00.jsonl")
+        simulate = [semslam, "simulate", "semantic", "--dimension", "3", "--trajectory", kitti,
+                    "--trajectory-format", "kitti", "--stride", "5", "--classes", "3", "--max-range", "30",
+                    "--landmark-density", "0.05", "--max-offset", "10", "--out", log]
+        _run(simulate)
+        table, figure = _methods_on_log(semslam, log, "kitti00", scratch, figures,
+                                        "semantic simulator over KITTI 00 (3D, from above)")
+        lines += ["### Semantic simulator in 3D over KITTI 00", "", "```sh", shown(simulate).replace(log, "kitti00.jsonl"),
+                  "for m in known ml gpda mm mm-nh; do build/bin/semslam run --method $m --in kitti00.jsonl --out kitti00/$m; done",
+                  "```", ""] + table + ["", f"![trajectories]({os.path.relpath(figure, 'docs')})", ""]
+    return lines
