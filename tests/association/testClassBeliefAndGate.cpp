@@ -26,7 +26,15 @@ TEST(ClassBelief, WeightTempersTheUpdateAndZeroLeavesItUnchanged) {
   belief.update(Vector2(0.9, 0.1), 0.0);
   EXPECT_NEAR(belief.probability(0), 0.5, 1e-15);
   belief.update(Vector2(0.9, 0.1), 0.5);
-  EXPECT_NEAR(belief.probability(0), 3.0 / 4.0, 1e-12);  // √0.9 / (√0.9 + √0.1) = 3 / 4
+  EXPECT_NEAR(belief.probability(0), 0.5 * 0.9 + 0.5 * 0.5, 1e-12);  // half Bayes, half prior
+  // A label the belief rules out: no change unless the association is certain.
+  ClassBelief certain(2);
+  certain.update(Vector2(1.0, 0.0));
+  certain.update(Vector2(0.0, 1.0), 1e-300);
+  EXPECT_EQ(certain.probability(0), 1.0);
+  EXPECT_EQ(certain.probabilities()(1), 0.0);  // exactly: a ruled-out class has no sliver of probability
+  EXPECT_EQ(certain.predictive(Vector2(0.0, 1.0)), 0.0);
+  EXPECT_THROW(certain.update(Vector2(0.0, 1.0), 1.0), std::invalid_argument);
   EXPECT_NEAR(belief.probabilities().sum(), 1.0, 1e-15);
 }
 
@@ -44,7 +52,7 @@ TEST(ClassBelief, RejectsBadInput) {
   ClassBelief belief(2);
   EXPECT_THROW(belief.update(Vector3(1, 1, 1)), std::invalid_argument);
   EXPECT_THROW(belief.update(Vector2(0.5, 0.5), 1.5), std::invalid_argument);
-  EXPECT_THROW(belief.update(Vector2(0.0, 0.0)), std::invalid_argument);
+  EXPECT_THROW(belief.update(Vector2(0.0, 0.0)), std::invalid_argument);  // impossible and certain
   EXPECT_THROW(belief.update(Vector2(std::nan(""), 0.5)), std::invalid_argument);
 }
 

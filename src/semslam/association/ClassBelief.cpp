@@ -14,7 +14,13 @@ ClassBelief::ClassBelief(int classes) {
   logProbabilities_ = Vector::Constant(classes, -std::log(static_cast<double>(classes)));
 }
 
-Vector ClassBelief::probabilities() const { return logProbabilities_.array().exp(); }
+Vector ClassBelief::probabilities() const {
+  // Scalar std::exp: Eigen's vectorised exp clamps its argument, so exp(−∞) would come out as 5.6e-309, not 0,
+  // and a class the belief has ruled out would keep a sliver of probability.
+  Vector probabilities(classes());
+  for (int c = 0; c < classes(); ++c) probabilities(c) = std::exp(logProbabilities_(c));
+  return probabilities;
+}
 
 double ClassBelief::probability(int classIndex) const {
   if (classIndex < 0 || classIndex >= classes()) throw std::invalid_argument("class index out of range");
@@ -35,18 +41,32 @@ double ClassBelief::predictive(const Vector& likelihoods) const {
 void ClassBelief::update(const Vector& likelihoods, double weight) {
   if (likelihoods.size() != classes()) throw std::invalid_argument("likelihood vector does not have one entry per class");
   if (!(weight >= 0.0 && weight <= 1.0)) throw std::invalid_argument("association weight must be in [0, 1]");
-  if (weight == 0.0) return;
-  Vector updated = logProbabilities_;
   for (int c = 0; c < classes(); ++c) {
     if (!(likelihoods(c) >= 0.0) || !std::isfinite(likelihoods(c))) {
       throw std::invalid_argument("class likelihoods must be finite and >= 0");
     }
-    updated(c) += weight * std::log(likelihoods(c));
   }
-  const double maximum = updated.maxCoeff();
-  if (!std::isfinite(maximum)) throw std::invalid_argument("a detection impossible under every class");
-  const double logNormalizer = maximum + std::log((updated.array() - maximum).exp().sum());
-  logProbabilities_ = updated.array() - logNormalizer;
+  if (weight == 0.0) return;
+  // Bayes' posterior in log space: log P(c | l) + log P(z | c) − log P(z | l).
+  Vector bayes = logProbabilities_ + likelihoods.array().log().matrix();
+  const double maximum = bayes.maxCoeff();
+  if (!std::isfinite(maximum)) {
+    // P(z | l) = 0: the detection cannot come from l. With w < 1 it did not (the posterior is the prior).
+    if (weight < 1.0) return;
+    throw std::invalid_argument("a detection impossible under every class of its landmark");
+  }
+  bayes = bayes.array() - (maximum + std::log((bayes.array() - maximum).exp().sum()));
+  if (weight == 1.0) {
+    logProbabilities_ = bayes;
+    return;
+  }
+  // w · Bayes + (1 − w) · prior, each term in log space.
+  const double logWeight = std::log(weight), logComplement = std::log1p(-weight);
+  for (int c = 0; c < classes(); ++c) {
+    const double a = logWeight + bayes(c), b = logComplement + logProbabilities_(c);
+    const double larger = std::max(a, b);
+    logProbabilities_(c) = std::isfinite(larger) ? larger + std::log(std::exp(a - larger) + std::exp(b - larger)) : larger;
+  }
 }
 
 Vector semanticLikelihoods(const LogHeader& header, const Detection& detection) {

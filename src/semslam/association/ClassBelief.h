@@ -4,11 +4,12 @@
 //
 // Math. With P(z | c) the classifier model's likelihood of a detection's semantic part (semanticLikelihoods()):
 //   predictive        P(z | l) = Σ_c P(z | c) P(c | l)                       (the semantic factor of B's weights)
-//   update, weight w  P(c | l) ∝ P(c | l) · P(z | c)^w,  w ∈ [0, 1]
-// The update with w = 1 is Bayes' rule for a detection certainly from l; a detection associated with probability
-// w contributes its likelihood tempered by w (the geometric mean of "from l" and "not from l, uninformative"),
-// which keeps the belief a distribution and leaves it unchanged at w = 0. Stored in log space and renormalised,
-// so long runs of confident labels neither underflow nor lock a class at exactly probability one.
+//   update, weight w  P(c | l) ← w · P(z | c) P(c | l) / P(z | l) + (1 − w) · P(c | l),   w ∈ [0, 1]
+// the posterior when the detection came from l with probability w (Bayes' rule) and otherwise says nothing about
+// l (the prior): a proper mixture, continuous in w, Bayes at w = 1 and no change at w = 0. A label that l's belief
+// rules out (P(z | l) = 0) leaves it unchanged when w < 1 and throws when w = 1. Stored in log space (the Bayes
+// term exactly, the mixture by log-sum-exp), so long runs of confident labels neither underflow nor lock a class
+// at exactly probability one.
 //
 // Invariants: probabilities() has M ≥ 1 entries, finite, ≥ 0, summing to one.
 
@@ -30,7 +31,7 @@ class ClassBelief {
 
   /// Σ_c P(z | c) P(c | l), given (P(z | c))_c.
   double predictive(const Vector& likelihoods) const;
-  /// P(c | l) ∝ P(c | l) P(z | c)^weight.
+  /// P(c | l) ← w · Bayes + (1 − w) · P(c | l).
   void update(const Vector& likelihoods, double weight = 1.0);
 
  private:

@@ -206,6 +206,7 @@ void SemanticSlam::findCandidates(const JointMarginal& marginal, int landmarkCou
     const LinearizedLikelihood geometric = linearizedLikelihood(factor, estimate, pair);
     if (!gate_.accepts(geometric)) continue;
     const double semantic = landmark.classBelief.predictive(record.semanticLikelihoods);
+    if (!(semantic > 0.0)) continue;  // a label this landmark's class belief rules out (exact model, p = 0)
     record.candidates.push_back(j);
     logWeights.push_back(geometric.logLikelihood + std::log(semantic));  // (B, sec. IV-B)
   }
