@@ -13,5 +13,7 @@ void addEvalCommand(CLI::App& app);
 void addCheckCommand(CLI::App& app);
 void addSimulateCommand(CLI::App& app);
 void addConvertCommand(CLI::App& app);
+void addRunCommand(CLI::App& app);
+void addStudyCommand(CLI::App& app);
 
 }  // namespace semslam::cli
