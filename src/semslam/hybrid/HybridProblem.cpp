@@ -5,6 +5,7 @@
 
 #include "semslam/association/ClassBelief.h"
 #include "semslam/factors/ViewpointSemanticFactor.h"
+#include "semslam/hybrid/CartesianGateFactor.h"
 #include "semslam/io/InputError.h"
 #include "semslam/models/ClassifierFactory.h"
 
@@ -63,6 +64,17 @@ std::vector<FactorPtr> HybridProblem::detectionFactors(Key pose, int object, con
         std::get<SE2>(header_.sensor.bodyToSensor)));
   }
   return factors;
+}
+
+FactorPtr HybridProblem::gateFactor(Key pose, int object, const Detection& detection) const {
+  if (header_.sensor.kind != SensorKind::RangeBearing) return factory_.detectionFactor(pose, objectKey(object), detection);
+  const FactorPtr checked = factory_.detectionFactor(pose, objectKey(object), detection);  // validates the detection
+  (void)checked;
+  const Vector2 rb = detection.geometry;
+  const Matrix2 covariance = detection.covariance;
+  const SE2& mount = std::get<SE2>(header_.sensor.bodyToSensor);
+  if (header_.landmarksHavePose) return CartesianGateFactor<SE2>::fromRangeBearing(pose, objectKey(object), rb, covariance, mount);
+  return CartesianGateFactor<Point2>::fromRangeBearing(pose, objectKey(object), rb, covariance, mount);
 }
 
 double HybridProblem::semanticLogConstant(const Detection& detection, int classIndex) const {

@@ -54,6 +54,9 @@ class HybridProblem {
   /// The factors of `detection` associated with `object` under class `classIndex` (ignored without semantics):
   /// the geometric factor, and the viewpoint semantic factor when that model is in use.
   std::vector<FactorPtr> detectionFactors(Key pose, int object, const Detection& detection, int classIndex) const;
+  /// The geometric factor the gate linearises (PropWeights.h): for a range-bearing sensor the detection in
+  /// Cartesian form (CartesianGateFactor.h), otherwise the geometric factor itself.
+  FactorPtr gateFactor(Key pose, int object, const Detection& detection) const;
   /// log P(z_sem | c) for the categorical model, 0 otherwise.
   double semanticLogConstant(const Detection& detection, int classIndex) const;
 

@@ -31,11 +31,19 @@ class FactorCache {
     return it->second;
   }
 
+  const FactorPtr& gate(int detection, int object) {
+    const auto key = std::make_pair(detection, object);
+    auto it = gates_.find(key);
+    if (it == gates_.end()) it = gates_.emplace(key, problem_.gateFactor(pose_, object, detections_[detection])).first;
+    return it->second;
+  }
+
  private:
   const HybridProblem& problem_;
   Key pose_;
   const std::vector<Detection>& detections_;
   std::map<std::tuple<int, int, int>, std::vector<FactorPtr>> cache_;
+  std::map<std::pair<int, int>, FactorPtr> gates_;
 };
 
 /// The keys of a candidate's integral: x_k, then its objects in order of first association.
@@ -54,6 +62,9 @@ AssociationCandidate extend(const AssociationCandidate& partial, const HybridPro
   child.beta.push_back(object);
   const std::vector<FactorPtr>& factors = cache.get(i, object, classIndex);
   child.factors.insert(child.factors.end(), factors.begin(), factors.end());
+  child.gateFactors.push_back(cache.gate(i, object));
+  child.analyticFactors.push_back(child.gateFactors.back());
+  child.analyticFactors.insert(child.analyticFactors.end(), factors.begin() + 1, factors.end());  // semantic part
   if (problem.enumeratesClasses()) {
     child.logConstant += problem.semanticLogConstant(detection, classIndex);
     if (newObject) {
@@ -76,17 +87,23 @@ std::vector<int> classChoices(const HybridProblem& problem, const AssociationCan
 bool uses(const std::vector<int>& beta, int object) { return std::find(beta.begin(), beta.end(), object) != beta.end(); }
 
 void linearize(AssociationCandidate& candidate, const PropagatedParent& parent, Key pose) {
+  const double base = std::log(parent.component->weight) + candidate.logConstant;
   if (candidate.factors.empty()) {
-    candidate.linearizedLogWeight = std::log(parent.component->weight) + candidate.logConstant;
+    candidate.linearizedLogWeight = candidate.gateLogWeight = base;
     candidate.innovationChi2 = 0.0;
     return;
   }
   const JointMarginal marginal = subMarginal(parent.joint, integralKeys(pose, candidate.beta));
-  const LinearizedLikelihood likelihood =
-      linearizedLikelihood(candidate.factors, parent.smoother->estimate(), marginal);
-  candidate.linearizedLogWeight =
-      std::log(parent.component->weight) + likelihood.logLikelihood + candidate.logConstant;
-  candidate.innovationChi2 = likelihood.innovationChi2;
+  const Values& estimate = parent.smoother->estimate();
+  const LinearizedLikelihood gate = linearizedLikelihood(candidate.gateFactors, estimate, marginal);
+  candidate.gateLogWeight = base + gate.logLikelihood;
+  candidate.innovationChi2 = gate.innovationChi2;
+  if (candidate.analyticFactors.size() == candidate.gateFactors.size()) {
+    candidate.linearizedLogWeight = candidate.gateLogWeight;
+  } else {
+    candidate.linearizedLogWeight =
+        base + linearizedLikelihood(candidate.analyticFactors, estimate, marginal).logLikelihood;
+  }
 }
 
 AssociationCandidate root(const PropagatedParent& parent, std::size_t index) {
@@ -149,7 +166,7 @@ std::vector<AssociationCandidate> oneDetectionAtATime(const HybridProblem& probl
               extend(partial, problem, caches[partial.parent], detections[i], i, object, c, isNew);
           linearize(child, parents[partial.parent], pose);
           int dimension = 0;
-          for (const FactorPtr& f : child.factors) dimension += f->errorDimension();
+          for (const FactorPtr& f : child.gateFactors) dimension += f->errorDimension();
           if (child.innovationChi2 <= compatibility.threshold(dimension)) next.push_back(std::move(child));
         }
       }
@@ -162,7 +179,7 @@ std::vector<AssociationCandidate> oneDetectionAtATime(const HybridProblem& probl
     // Prune partial hypotheses by linearised weight (the gate's ratio) and, with a component cap, keep at most
     // ten times the cap.
     std::vector<double> logWeights;
-    for (const AssociationCandidate& c : next) logWeights.push_back(c.linearizedLogWeight);
+    for (const AssociationCandidate& c : next) logWeights.push_back(c.gateLogWeight);
     const int cap = options.maxComponents > 0 ? 10 * options.maxComponents : 0;
     const PruningResult kept = pruneAndNormalize(logWeights, options.gateRatio, cap);
     partials.clear();
@@ -205,14 +222,17 @@ std::vector<AssociationCandidate> propagateWeights(const HybridProblem& problem,
   if (candidates.empty()) return candidates;
 
   // Gate on the linearised weights.
-  double maximum = kNegativeInfinity;
-  for (const AssociationCandidate& c : candidates) maximum = std::max(maximum, c.linearizedLogWeight);
-  const double gateLevel = options.gateRatio > 1.0 ? maximum - std::log(options.gateRatio) : kNegativeInfinity;
+  double maximum = kNegativeInfinity, maximumGate = kNegativeInfinity;
+  for (const AssociationCandidate& c : candidates) {
+    maximum = std::max(maximum, c.linearizedLogWeight);
+    maximumGate = std::max(maximumGate, c.gateLogWeight);
+  }
+  const double gateLevel = options.gateRatio > 1.0 ? maximumGate - std::log(options.gateRatio) : kNegativeInfinity;
   double total = 0.0, lost = 0.0;
   for (AssociationCandidate& c : candidates) {
     const double w = std::isfinite(maximum) ? std::exp(c.linearizedLogWeight - maximum) : 0.0;
     total += w;
-    c.gated = c.linearizedLogWeight < gateLevel;
+    c.gated = c.gateLogWeight < gateLevel;
     if (c.gated) {
       lost += w;
       ++report.gated;

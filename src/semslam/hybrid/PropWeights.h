@@ -14,12 +14,17 @@
 // Weights. With F the stacked factors of the candidate's detections (geometric and viewpoint-semantic, eq. 10)
 // and Σ the joint marginal of x_k and the associated objects under the parent's propagated belief (eq. 17):
 //   linearised   ℓ_lin = log w_parent + log N(r̄; 0, JΣJᵀ + I) + log-constants     (MarginalLikelihood.h)
+//                over the geometric factors in Cartesian form (CartesianGateFactor.h: accurate far from the
+//                linearisation point) and the semantic factors;
+//   gate         ℓ_gate: the same over the Cartesian geometric factors only (semantics can only sharpen it, and
+//                their linearisation in θ is poor under a broad prior);
 //   sampled      ℓ     = log w_parent + log (1/n_s) Σ_s P(Z | X_s) P(β | X_s) + log-constants     (eq. 16)
 //                with P(β | X_s) the visibility indicator (VisibilityModel2::associationFeasible) when enabled;
 //   log-constants: Σ_i log P(z_sem,i | c) for the categorical model, and log(1/M) per newly associated object
 //                  (the class prior, eq. 3).
-// Gate: before sampling, a candidate whose ℓ_lin < max ℓ_lin − log(gateRatio) is skipped (weight 0); the
+// Gate: before sampling, a candidate whose ℓ_gate < max ℓ_gate − log(gateRatio) is skipped (weight 0); the
 // linearised mass it held, Σ_gated exp(ℓ_lin) / Σ_all exp(ℓ_lin), is reported as the gate's lost mass.
+// The joint-compatibility test of one-detection-at-a-time branching uses the gate factors' innovation.
 // Fallback: when every sampled weight is zero (no sample makes any candidate visible), the linearised weights
 // are used for that step and the fallback is reported.
 
@@ -37,9 +42,12 @@ struct AssociationCandidate {
   std::size_t parent = 0;
   std::vector<int> beta;            ///< object per detection, −1 dropped
   std::vector<int> classes;         ///< the parent's realization extended by the new objects' classes
-  std::vector<FactorPtr> factors;   ///< stacked factors of the associated detections
+  std::vector<FactorPtr> factors;   ///< stacked factors of the associated detections (the belief's)
+  std::vector<FactorPtr> gateFactors;     ///< their geometric parts in the gate's form
+  std::vector<FactorPtr> analyticFactors; ///< gate factors plus the semantic factors: the analytic weight's
   double logConstant = 0.0;
-  double linearizedLogWeight = 0.0;
+  double gateLogWeight = 0.0;       ///< log w_parent + linearised geometric log-likelihood + log-constants
+  double linearizedLogWeight = 0.0; ///< log w_parent + linearised log-likelihood of analyticFactors + constants
   double innovationChi2 = 0.0;
   double logWeight = 0.0;           ///< the weight used (sampled or analytic); −∞ when gated
   double relativeStandardError = 0.0;
