@@ -222,15 +222,12 @@ std::vector<AssociationCandidate> propagateWeights(const HybridProblem& problem,
   if (candidates.empty()) return candidates;
 
   // Gate on the linearised weights.
-  double maximum = kNegativeInfinity, maximumGate = kNegativeInfinity;
-  for (const AssociationCandidate& c : candidates) {
-    maximum = std::max(maximum, c.linearizedLogWeight);
-    maximumGate = std::max(maximumGate, c.gateLogWeight);
-  }
+  double maximumGate = kNegativeInfinity;
+  for (const AssociationCandidate& c : candidates) maximumGate = std::max(maximumGate, c.gateLogWeight);
   const double gateLevel = options.gateRatio > 1.0 ? maximumGate - std::log(options.gateRatio) : kNegativeInfinity;
   double total = 0.0, lost = 0.0;
   for (AssociationCandidate& c : candidates) {
-    const double w = std::isfinite(maximum) ? std::exp(c.linearizedLogWeight - maximum) : 0.0;
+    const double w = std::isfinite(maximumGate) ? std::exp(c.gateLogWeight - maximumGate) : 0.0;
     total += w;
     c.gated = c.gateLogWeight < gateLevel;
     if (c.gated) {

@@ -23,7 +23,7 @@
 //   log-constants: Σ_i log P(z_sem,i | c) for the categorical model, and log(1/M) per newly associated object
 //                  (the class prior, eq. 3).
 // Gate: before sampling, a candidate whose ℓ_gate < max ℓ_gate − log(gateRatio) is skipped (weight 0); the
-// linearised mass it held, Σ_gated exp(ℓ_lin) / Σ_all exp(ℓ_lin), is reported as the gate's lost mass.
+// linearised mass it held, Σ_gated exp(ℓ_gate) / Σ_all exp(ℓ_gate), is reported as the gate's lost mass.
 // The joint-compatibility test of one-detection-at-a-time branching uses the gate factors' innovation.
 // Fallback: when every sampled weight is zero (no sample makes any candidate visible), the linearised weights
 // are used for that step and the fallback is reported.
@@ -59,7 +59,7 @@ struct PropWeightsReport {
   std::size_t candidates = 0;
   std::size_t gated = 0;
   std::size_t sampled = 0;
-  double gateLostMass = 0.0;            ///< linearised mass of the gated candidates
+  double gateLostMass = 0.0;            ///< gate-linearised mass of the gated candidates
   double maxRelativeStandardError = 0.0;///< of the sampled weights that carry ≥ 1e-3 of the mass
   double analyticTotalVariation = 0.0;  ///< ½ Σ |w_sampled − w_lin| over the sampled candidates (normalised each)
   int droppedDetections = 0;
