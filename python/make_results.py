@@ -152,7 +152,7 @@ def hybrid_section(semslam, data, scratch, python):
         out = os.path.join(scratch, "hybrid-" + weights)
         command = [semslam, "study", "hybrid", "--tracks", "50", "--steps", "10", "--alpha", "0.25", "--weights",
                    weights, "--out", out]
-        studies.append((weights, shown(command, data).replace(out, "DIR"), out, run(command).strip()))
+        studies.append((weights, shown(command, data).replace(out, "DIR"), out, run(command).strip().replace(out, "DIR")))
     sweep = os.path.join(scratch, "hybrid-sweep")
     sweep_command = [semslam, "study", "hybrid", "--tracks", "50", "--steps", "10", "--out", sweep]
     sweep_output = run(sweep_command).strip()
