@@ -139,7 +139,100 @@ def datasets_section(semslam, data, scratch):
     return lines
 
 
-SECTIONS = ["pose-graphs", "evo", "datasets", "max-mixtures"]
+def hybrid_section(semslam, data, scratch, python):
+    """Paper A's study on aliased2d (issue 4) and the hybrid belief on Lost in the Woods."""
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import plot_hybrid
+    lines = ["## Hybrid belief, paper A (issue 4)", "",
+             "docs/hybrid-belief.md explains the method and every decision. Study: 50 tracks of 10 steps on the "
+             "default aliased2d layout, the same tracks with and without the classifier model (paired), 1000 "
+             "samples per weight, pruning at w_max/150, gate at 1e5; differences are classifier − geometric at the "
+             "final step with 95 % t intervals over tracks; the slope is the per-track least-squares slope of the "
+             "entropy against alpha.", ""]
+    studies = []
+    for weights in ("sampled", "analytic"):
+        out = os.path.join(scratch, "hybrid-" + weights)
+        command = [semslam, "study", "hybrid", "--tracks", "50", "--steps", "10", "--alpha", "0.25", "--weights",
+                   weights, "--out", out]
+        studies.append((weights, shown(command, data).replace(out, "DIR"), out, run(command).strip().replace(out, "DIR")))
+    sweep = os.path.join(scratch, "hybrid-sweep")
+    sweep_command = [semslam, "study", "hybrid", "--tracks", "50", "--steps", "10", "--out", sweep]
+    sweep_output = run(sweep_command).strip()
+    for weights, command, out, output in studies:
+        a = plot_hybrid.analyze(out, 0.25)
+        s = plot_hybrid.analyze(sweep, 0.25) if weights == "sampled" else None
+        lines += [f"### alpha = 0.25, {weights} weights", "", "```sh", command, "```", "", "```", output, "```", "",
+                  "| metric | classifier | geometric | paired difference | 95 % CI | excludes 0 |", "|---|---|---|---|---|---|"]
+        for metric, _ in plot_hybrid.METRICS:
+            p = a["paired"][metric]
+            lines.append(f"| {metric} | {p['classifier_mean']:.4g} | {p['geometric_mean']:.4g} | "
+                         f"{p['mean_difference']:.4g} | [{p['ci_low']:.4g}, {p['ci_high']:.4g}] | "
+                         f"{'yes' if p['excludes_zero'] else 'no'} |")
+        lines.append("")
+        for model in ("classifier", "geometric"):
+            n = a["nees"].get(model)
+            d = a["disambiguated"][model]
+            if n:
+                lines.append(f"- {model}: final-pose NEES of the heaviest component {n['mean']:.4g} "
+                             f"(95 % band [{n['lower']:.3g}, {n['upper']:.3g}], {'inside' if n['inside'] else 'outside'}); "
+                             f"one history > 0.9 at step 5 in {100 * d['fraction']:.0f} % of tracks; heaviest final "
+                             f"history correct in {100 * d['heaviest_correct']:.0f} %.")
+        lines.append(f"- largest gate lost mass per run: {a['gate_lost_mass_max']:.3g}; sampled-vs-linearised total "
+                     f"variation of the weights (mean over steps and runs): {a['sampled_vs_analytic_total_variation']:.3g}; "
+                     f"{a['sampled_candidates']:.0f} weights sampled in {a['sampling_s']:.2f} s of sampling "
+                     f"(thread time), total run time {a['run_s_total']:.1f} s (thread time).")
+        if s and "entropy_slope" in s:
+            e = s["entropy_slope"]
+            lines.append(f"- alpha sweep (`{shown(sweep_command, data).replace(sweep, 'DIR')}`): paired slope of the "
+                         f"classifier's entropy against alpha {e['mean']:.4g}, 95 % CI [{e['ci_low']:.4g}, "
+                         f"{e['ci_high']:.4g}] ({'below zero' if e['below_zero'] else 'not below zero'}). "
+                         f"`{sweep_output.splitlines()[0]}`")
+        lines.append("")
+    figures = os.path.join("docs", "figures")
+    os.makedirs(figures, exist_ok=True)
+    run([python, os.path.join("python", "plot_hybrid.py"), "fig5", sweep, "--out",
+         os.path.join(figures, "hybrid_fig5.png")])
+    track = os.path.join(scratch, "track.jsonl")
+    run([semslam, "simulate", "aliased2d", "--steps", "10", "--seed", "3", "--out", track])
+    runs = {}
+    for method in ("hybrid", "hybrid-geometric"):
+        runs[method] = os.path.join(scratch, method)
+        run([semslam, "run", "--method", method, "--in", track, "--out", runs[method], "--seed", "1"])
+    run([python, os.path.join("python", "plot_hybrid.py"), "fig4", runs["hybrid"], runs["hybrid-geometric"],
+         "--steps", "1,3,5,9", "--out", os.path.join(figures, "hybrid_fig4.png")])
+    lines += ["Figures: `docs/figures/hybrid_fig4.png` (Fig. 4 analog, `semslam simulate aliased2d --steps 10 --seed 3`, "
+              "then `semslam run --method hybrid|hybrid-geometric`, `python/plot_hybrid.py fig4`), "
+              "`docs/figures/hybrid_fig5.png` (Fig. 5 analog from the alpha sweep, `python/plot_hybrid.py fig5`).", ""]
+
+    litw = os.path.join(data, "utias-lost-in-the-woods")
+    lines += ["### Lost in the Woods, first 120 keyframes (1 Hz)", ""]
+    if not os.path.exists(litw):
+        return lines + ["dataset absent", ""]
+    log = os.path.join(scratch, "litw.jsonl")
+    convert = [semslam, "convert", "utias-lost-in-the-woods", litw, "--out", log, "--classes", "2",
+               "--keyframe-period", "1", "--max-steps", "120", "--map-prior", "0.1", "--initial-pose-sigma",
+               "1,1,0.3"]
+    run(convert)
+    lines += ["```sh", shown(convert, data).replace(log, "litw.jsonl"), "```", "",
+              "| method | weights | ATE rmse [m] | DA accuracy | NEES (heaviest) | entropy | components max/mean | time [s] |",
+              "|---|---|---|---|---|---|---|---|"]
+    for method in ("hybrid", "hybrid-geometric"):
+        for weights in ("sampled", "analytic"):
+            out = os.path.join(scratch, f"litw-{method}-{weights}")
+            command = [semslam, "run", "--method", method, "--weights", weights, "--branching", "one-at-a-time",
+                       "--max-components", "20", "--in", log, "--out", out]
+            run(command)
+            with open(os.path.join(out, "metrics.json")) as f:
+                m = json.load(f)
+            counts = [len(json.loads(line)["components"]) for line in open(os.path.join(out, "hypotheses.jsonl"))]
+            lines.append(f"| {method} | {weights} | {m['ate_rmse']:.4g} | {m['da_accuracy']:.4g} | {m['nees_mean']:.4g} | "
+                         f"{m['entropy']:.3g} | {max(counts)}/{sum(counts) / len(counts):.2f} | {m['time_s']:.2f} |")
+    lines += ["", "Command: `semslam run --method M --weights W --branching one-at-a-time --max-components 20 "
+              "--in litw.jsonl --out DIR`.", ""]
+    return lines
+
+
+SECTIONS = ["pose-graphs", "evo", "datasets", "hybrid", "max-mixtures"]
 
 
 def section_lines(name, semslam, data, scratch):
@@ -150,6 +243,8 @@ def section_lines(name, semslam, data, scratch):
         body = evo_section(semslam, data)
     elif name == "datasets":
         body = datasets_section(semslam, data, scratch)
+    elif name == "hybrid":
+        body = hybrid_section(semslam, data, scratch, sys.executable)
     elif name == "max-mixtures":
         body = results_max_mixtures.max_mixture_sections(semslam, data, scratch,
                                                          lambda command: shown(command, data))

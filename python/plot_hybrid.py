@@ -1,0 +1,258 @@
+#!/usr/bin/env python3
+"""Paper A's figures for the hybrid belief, and the statistics of its study.
+
+  plot_hybrid.py fig4 CLASSIFIER_RUN GEOMETRIC_RUN [--steps 1,3,5,9] [--out docs/figures/hybrid_fig4.png]
+      The analog of paper A's Fig. 4: the mixture posterior over the current robot pose (eq. 6) at chosen steps,
+      without (top row) and with (middle row) the classifier model: component means with their heading, 2-sigma
+      position ellipses with line width by weight, ground truth; bottom row: P(beta_1:k | H_k) (eq. 8) of each
+      history, blue without, red with, the true history circled green. The run folders are those of
+      `semslam run --method hybrid|hybrid-geometric` on the same log.
+  plot_hybrid.py fig5 STUDY_DIR [--out docs/figures/hybrid_fig5.png]
+      The analog of Fig. 5: the four metrics at the final step against alpha, mean over tracks with 95 % intervals.
+  plot_hybrid.py analyze STUDY_DIR [--alpha 0.25] [--json]
+      Paired differences (classifier - geometric) with 95 % t intervals, the paired slope of the entropy against
+      alpha, the pooled NEES and the disambiguation fractions.
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import sys
+
+
+def t_quantile_975(dof):
+    """Two-sided 95 % Student t quantile (Cornish-Fisher expansion; exact to 1e-3 for dof >= 3)."""
+    z = 1.959963984540054
+    if dof <= 0:
+        return float("nan")
+    table = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776}
+    if dof in table:
+        return table[dof]
+    g1 = (z ** 3 + z) / 4
+    g2 = (5 * z ** 5 + 16 * z ** 3 + 3 * z) / 96
+    g3 = (3 * z ** 7 + 19 * z ** 5 + 17 * z ** 3 - 15 * z) / 384
+    return z + g1 / dof + g2 / dof ** 2 + g3 / dof ** 3
+
+
+def mean_ci(values):
+    n = len(values)
+    if n == 0:
+        return float("nan"), float("nan"), float("nan")
+    m = sum(values) / n
+    if n < 2:
+        return m, float("nan"), float("nan")
+    sd = math.sqrt(sum((v - m) ** 2 for v in values) / (n - 1))
+    half = t_quantile_975(n - 1) * sd / math.sqrt(n)
+    return m, m - half, m + half
+
+
+def read_runs(study):
+    with open(os.path.join(study, "runs.csv")) as f:
+        rows = list(csv.DictReader(f))
+    for r in rows:
+        for key in r:
+            if key not in ("model",):
+                r[key] = float(r[key])
+    return rows
+
+
+METRICS = [("entropy", "H(w) over P(beta)"), ("det_cov", "det(Sigma) of position"),
+           ("err_wmax", "error of w_max [m]"), ("err_wavg", "weighted error [m]")]
+
+
+def analyze(study, alpha=0.25):
+    rows = read_runs(study)
+    alphas = sorted({r["alpha"] for r in rows})
+    by = {(r["alpha"], r["model"], int(r["track"])): r for r in rows}
+    tracks = sorted({int(r["track"]) for r in rows})
+    result = {"alpha": alpha, "tracks": len(tracks), "paired": {}, "nees": {}, "disambiguated": {}}
+    near = min(alphas, key=lambda a: abs(a - alpha))
+    result["alpha"] = near
+    for metric, _ in METRICS:
+        diffs = [by[(near, "classifier", t)][metric] - by[(near, "geometric", t)][metric] for t in tracks
+                 if (near, "classifier", t) in by and (near, "geometric", t) in by]
+        m, lo, hi = mean_ci(diffs)
+        result["paired"][metric] = {"mean_difference": m, "ci_low": lo, "ci_high": hi,
+                                    "classifier_mean": mean_ci([by[(near, "classifier", t)][metric] for t in tracks])[0],
+                                    "geometric_mean": mean_ci([by[(near, "geometric", t)][metric] for t in tracks])[0],
+                                    "excludes_zero": bool(hi < 0 or lo > 0)}
+    if len(alphas) >= 2:
+        slopes = []
+        for t in tracks:
+            xs = [a for a in alphas if (a, "classifier", t) in by]
+            ys = [by[(a, "classifier", t)]["entropy"] for a in xs]
+            mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
+            sxx = sum((x - mx) ** 2 for x in xs)
+            slopes.append(sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx)
+        m, lo, hi = mean_ci(slopes)
+        result["entropy_slope"] = {"mean": m, "ci_low": lo, "ci_high": hi, "below_zero": bool(hi < 0)}
+    nees_path = os.path.join(study, "nees.csv")
+    if os.path.exists(nees_path):
+        with open(nees_path) as f:
+            for r in csv.DictReader(f):
+                if abs(float(r["alpha"]) - near) < 1e-12:
+                    mean, lower, upper = float(r["nees_mean"]), float(r["lower"]), float(r["upper"])
+                    result["nees"][r["model"]] = {"mean": mean, "lower": lower, "upper": upper,
+                                                  "inside": bool(lower <= mean <= upper)}
+    for model in ("classifier", "geometric"):
+        flags = [by[(near, model, t)]["disambiguated_at_step"] for t in tracks if (near, model, t) in by]
+        correct = [by[(near, model, t)]["heaviest_history_correct"] for t in tracks if (near, model, t) in by]
+        result["disambiguated"][model] = {"fraction": sum(flags) / len(flags) if flags else float("nan"),
+                                          "heaviest_correct": sum(correct) / len(correct) if correct else float("nan")}
+    tv = [r["analytic_total_variation"] for r in rows if r["sampled_candidates"] > 0]
+    result["sampled_vs_analytic_total_variation"] = mean_ci(tv)[0] if tv else float("nan")
+    result["gate_lost_mass_max"] = max(r["gate_lost_mass"] for r in rows)
+    sampled = sum(r["sampled_candidates"] for r in rows)
+    sampling = sum(r["sampling_s"] for r in rows)
+    result["sampled_candidates"] = sampled
+    result["sampling_s"] = sampling
+    result["run_s_total"] = sum(r["time_s"] for r in rows)
+    return result
+
+
+def fig5(study, out):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    rows = read_runs(study)
+    alphas = sorted({r["alpha"] for r in rows})
+    fig, axes = plt.subplots(1, 4, figsize=(16, 3.6))
+    for ax, (metric, title) in zip(axes, METRICS):
+        for model, color in (("geometric", "tab:blue"), ("classifier", "tab:red")):
+            stats = [mean_ci([r[metric] for r in rows if r["alpha"] == a and r["model"] == model]) for a in alphas]
+            ms = [s[0] for s in stats]
+            err = [[s[0] - s[1] for s in stats], [s[2] - s[0] for s in stats]]
+            ax.errorbar(alphas, ms, yerr=err, color=color, marker="o", capsize=3,
+                        label="with classifier model" if model == "classifier" else "geometric only")
+        ax.set_xlabel("alpha")
+        ax.set_title(title)
+        ax.grid(alpha=0.3)
+    axes[0].legend(fontsize=8)
+    fig.suptitle("Hybrid belief on aliased2d: final-step metrics against alpha (mean over tracks, 95 % CI)")
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+    print(f"wrote {out}")
+
+
+def read_jsonl(path):
+    with open(path) as f:
+        return [json.loads(line) for line in f if line.strip()]
+
+
+def read_tum(path):
+    poses = []
+    if not os.path.exists(path):
+        return poses
+    with open(path) as f:
+        for line in f:
+            if line.strip() and not line.startswith("#"):
+                v = [float(x) for x in line.split()]
+                poses.append((v[1], v[2]))
+    return poses
+
+
+def true_history(run):
+    path = os.path.join(run, "associations.csv")
+    history = {}
+    if not os.path.exists(path):
+        return history
+    with open(path) as f:
+        for r in csv.DictReader(f):
+            history.setdefault(int(r["step"]), []).append(int(r["truth"]) if r["truth"] not in ("", "not-a-landmark") else -1)
+    return history
+
+
+def ellipse(ax, mean, heading, cov, width, color):
+    import numpy as np
+    c = math.cos(heading)
+    s = math.sin(heading)
+    R = np.array([[c, -s], [s, c]])
+    world = R @ np.array(cov)[:2, :2] @ R.T
+    vals, vecs = np.linalg.eigh(world)
+    t = np.linspace(0, 2 * math.pi, 60)
+    circle = np.stack([np.cos(t), np.sin(t)])
+    pts = vecs @ (2.0 * np.sqrt(np.maximum(vals, 0))[:, None] * circle)
+    ax.plot(mean[0] + pts[0], mean[1] + pts[1], color=color, linewidth=width)
+
+
+def fig4(classifier, geometric, steps, out):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    runs = {"geometric": read_jsonl(os.path.join(geometric, "hypotheses.jsonl")),
+            "classifier": read_jsonl(os.path.join(classifier, "hypotheses.jsonl"))}
+    truth = read_tum(os.path.join(classifier, "truth.tum"))
+    truth_hist = true_history(classifier)
+    steps = [s for s in steps if s < len(runs["classifier"])]
+    fig, axes = plt.subplots(3, len(steps), figsize=(4.2 * len(steps), 11), squeeze=False)
+    for col, k in enumerate(steps):
+        for row, (model, color) in enumerate((("geometric", "tab:blue"), ("classifier", "tab:red"))):
+            ax = axes[row][col]
+            if truth:
+                ax.plot([p[0] for p in truth], [p[1] for p in truth], "g.-", linewidth=0.8, label="ground truth")
+            record = runs[model][k]
+            for comp in record["components"]:
+                x, y, th = comp["pose"]
+                w = comp["weight"]
+                ellipse(ax, (x, y), th, comp["covariance"], 0.3 + 4.0 * w, color)
+                ax.plot([x, x + 0.6 * math.cos(th)], [y, y + 0.6 * math.sin(th)], color="navy", linewidth=0.5 + 2 * w)
+                ax.plot(x, y, "o", color=color, markersize=2 + 4 * w)
+            ax.set_title(f"k = {k}, {'with' if model == 'classifier' else 'without'} classifier "
+                         f"({len(record['components'])} comp.)", fontsize=9)
+            ax.set_aspect("equal", adjustable="datalim")
+            ax.grid(alpha=0.3)
+        ax = axes[2][col]
+        histories = {}
+        for model in ("geometric", "classifier"):
+            for a in runs[model][k]["association_marginal"]:
+                histories.setdefault(json.dumps(a["associations"]), {})[model] = a["weight"]
+        keys = sorted(histories, key=lambda h: -max(histories[h].values()))[:20]
+        xs = range(len(keys))
+        ax.bar([x - 0.2 for x in xs], [histories[h].get("geometric", 0) for h in keys], width=0.4, color="tab:blue",
+               label="without")
+        ax.bar([x + 0.2 for x in xs], [histories[h].get("classifier", 0) for h in keys], width=0.4, color="tab:red",
+               label="with")
+        true = [truth_hist.get(s, []) for s in range(k + 1)]
+        for x, h in zip(xs, keys):
+            if json.loads(h) == true:
+                ax.plot(x, max(histories[h].values()) + 0.05, "o", markerfacecolor="none", markeredgecolor="green",
+                        markersize=10)
+        ax.set_ylim(0, 1.15)
+        ax.set_title(f"P(beta_1:k | H_k), k = {k} (top 20)", fontsize=9)
+        ax.set_xticks(list(xs))
+        ax.set_xticklabels([str(i) for i in xs], fontsize=6)
+        if col == 0:
+            ax.legend(fontsize=8)
+    fig.suptitle("Hybrid belief: posterior over the robot pose (eq. 6) and association marginal (eq. 8)")
+    fig.tight_layout()
+    fig.savefig(out, dpi=100)
+    print(f"wrote {out}")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = parser.add_subparsers(dest="command", required=True)
+    p4 = sub.add_parser("fig4")
+    p4.add_argument("classifier")
+    p4.add_argument("geometric")
+    p4.add_argument("--steps", default="1,3,5,9")
+    p4.add_argument("--out", default=os.path.join("docs", "figures", "hybrid_fig4.png"))
+    p5 = sub.add_parser("fig5")
+    p5.add_argument("study")
+    p5.add_argument("--out", default=os.path.join("docs", "figures", "hybrid_fig5.png"))
+    pa = sub.add_parser("analyze")
+    pa.add_argument("study")
+    pa.add_argument("--alpha", type=float, default=0.25)
+    args = parser.parse_args()
+    if args.command == "fig4":
+        fig4(args.classifier, args.geometric, [int(s) for s in args.steps.split(",")], args.out)
+    elif args.command == "fig5":
+        fig5(args.study, args.out)
+    else:
+        json.dump(analyze(args.study, args.alpha), sys.stdout, indent=2)
+        print()
+
+
+if __name__ == "__main__":
+    main()

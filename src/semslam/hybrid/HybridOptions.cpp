@@ -1,0 +1,29 @@
+#include "semslam/hybrid/HybridOptions.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "semslam/solve/BatchSmoother.h"
+
+namespace semslam {
+
+SmootherFactory defaultSmootherFactory() {
+  return [] {
+    OptimizerParams params;
+    params.solver = SolverType::LevenbergMarquardt;
+    params.maxIterations = 50;
+    params.relativeDecreaseTolerance = 1e-9;
+    return std::make_unique<BatchSmoother>(params);
+  };
+}
+
+void HybridOptions::validate() const {
+  if (samples < 2) throw std::invalid_argument("hybrid: at least 2 samples are needed");
+  if (!std::isfinite(pruneRatio) || !std::isfinite(gateRatio)) throw std::invalid_argument("hybrid: ratios must be finite");
+  if (!(jointCompatibility > 0.0 && jointCompatibility < 1.0)) {
+    throw std::invalid_argument("hybrid: joint-compatibility confidence must be in (0, 1)");
+  }
+  if (maxComponents < 0) throw std::invalid_argument("hybrid: max components must be >= 0");
+}
+
+}  // namespace semslam

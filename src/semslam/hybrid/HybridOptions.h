@@ -1,0 +1,61 @@
+#pragma once
+// HybridOptions: every switch of paper A's hybrid belief (Algorithm 1) as implemented here; docs/hybrid-belief.md
+// explains each choice where the paper is silent.
+//
+//   useSemantics        false: the geometric-only mode (passive DA-BSP, A sec. V): semantic parts are ignored and
+//                       class realizations are not enumerated; true: semantic factors (eq. 10, 18) or categorical
+//                       likelihoods enter weights and beliefs, and each component carries a class realization.
+//   weights             Sampled: eq. 16-17 by Monte Carlo over the joint marginal of x_k and the associated objects
+//                       with `samples` draws, times the visibility model; Analytic: the linearised marginal
+//                       likelihood (association/MarginalLikelihood.h, the weight of paper B), without visibility.
+//   pruneRatio          prune components with w < w_max / pruneRatio (A sec. V: 150); ≤ 1 disables pruning.
+//   gateRatio           before sampling, skip candidates whose linearised weight is below w_max,lin / gateRatio
+//                       (the weight they could carry is reported as the gate's lost mass); ≤ 1 disables the gate.
+//   branching           WholeAssociation: every β_k of the step (each detection to a distinct object) as in
+//                       Algorithm 1; OneDetectionAtATime: branch detection by detection, keeping only partial
+//                       associations whose stacked innovation passes a joint-compatibility χ² test at
+//                       `jointCompatibility` and pruning partial hypotheses between detections.
+//   maxComponents       after pruning keep at most this many (heaviest); 0: no cap.
+//   enumerateAllClasses start from all M^N class realizations instead of collapsing unassociated objects
+//                       (A sec. IV-D); for tests that check collapsing.
+//   visibility          multiply sampled weights by the object observation model P(β_k | x_k, X^o) (A eq. 14-16).
+//   seed                the one random stream of a run (Monte Carlo draws).
+//   smootherFactory     makes each component's Smoother (default: BatchSmoother, Levenberg-Marquardt); an
+//                       incremental smoother slots in here.
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+
+#include "semslam/solve/Smoother.h"
+
+namespace semslam {
+
+enum class WeightMethod { Sampled, Analytic };
+enum class Branching { WholeAssociation, OneDetectionAtATime };
+
+using SmootherFactory = std::function<std::unique_ptr<Smoother>()>;
+
+/// BatchSmoother with Levenberg-Marquardt (robust to the far-off linearisation points of a broad initial prior).
+SmootherFactory defaultSmootherFactory();
+
+struct HybridOptions {
+  bool useSemantics = true;
+  WeightMethod weights = WeightMethod::Sampled;
+  int samples = 1000;
+  double pruneRatio = 150.0;
+  double gateRatio = 1e5;
+  Branching branching = Branching::WholeAssociation;
+  double jointCompatibility = 0.999;
+  int maxComponents = 0;
+  bool enumerateAllClasses = false;
+  bool visibility = true;
+  std::uint64_t seed = 1;
+  SmootherFactory smootherFactory;  // empty: defaultSmootherFactory()
+
+  /// Throws std::invalid_argument for samples < 2, non-finite ratios, jointCompatibility outside (0, 1) or
+  /// maxComponents < 0.
+  void validate() const;
+};
+
+}  // namespace semslam

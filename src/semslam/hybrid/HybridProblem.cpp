@@ -1,0 +1,87 @@
+#include "semslam/hybrid/HybridProblem.h"
+
+#include <cmath>
+#include <limits>
+
+#include "semslam/association/ClassBelief.h"
+#include "semslam/factors/ViewpointSemanticFactor.h"
+#include "semslam/hybrid/CartesianGateFactor.h"
+#include "semslam/io/InputError.h"
+#include "semslam/models/ClassifierFactory.h"
+
+namespace semslam {
+namespace {
+
+const LogHeader& checked(const LogHeader& header) {
+  if (header.dimension != 2) throw InputError("hybrid belief: only 2D logs are supported");
+  if (!header.initialPose) throw InputError("hybrid belief: the log has no initial pose prior");
+  if (header.landmarkPriors.empty()) {
+    throw InputError("hybrid belief: the log has no landmark priors (paper A needs the known, uncertain map; "
+                     "convert with --map-prior)");
+  }
+  return header;
+}
+
+}  // namespace
+
+HybridProblem::HybridProblem(const LogHeader& header, bool useSemantics)
+    : header_(checked(header)), factory_(header_), visibility_(VisibilityModel2::fromSpec(header_.sensor)) {
+  if (!useSemantics || header_.semantic == SemanticKind::None) return;
+  switch (header_.classifier.kind) {
+    case ClassifierModelSpec::Kind::ViewpointGaussian:
+      if (!header_.landmarksHavePose) {
+        throw InputError("hybrid belief: the viewpoint classifier model needs objects with a pose");
+      }
+      if (header_.semantic != SemanticKind::Scores && header_.semantic != SemanticKind::Probabilities) {
+        throw InputError("hybrid belief: the viewpoint classifier model needs class vectors (scores)");
+      }
+      viewpointModel_ = makeViewpointClassifier(header_.classifier, header_.classes);
+      semantic_ = SemanticModelKind::Viewpoint;
+      break;
+    case ClassifierModelSpec::Kind::Categorical: semantic_ = SemanticModelKind::Categorical; break;
+    case ClassifierModelSpec::Kind::None: break;
+  }
+}
+
+Key HybridProblem::objectKey(int object) { return landmarkKey(static_cast<std::uint64_t>(object)); }
+
+void HybridProblem::priors(FactorGraph& factors, Values& values) const {
+  factors.add(factory_.posePriorFactor(poseKey(0), *header_.initialPose));
+  values.insert(poseKey(0), factory_.initialPose(header_));
+  for (int j = 0; j < objects(); ++j) {
+    factors.add(factory_.landmarkPriorFactor(objectKey(j), header_.landmarkPriors[j]));
+    values.insert(objectKey(j), factory_.landmarkValue(header_.landmarkPriors[j].mean));
+  }
+}
+
+std::vector<FactorPtr> HybridProblem::detectionFactors(Key pose, int object, const Detection& detection,
+                                                       int classIndex) const {
+  std::vector<FactorPtr> factors{factory_.detectionFactor(pose, objectKey(object), detection)};
+  if (semantic_ == SemanticModelKind::Viewpoint) {
+    if (!detection.classVector) throw InputError("hybrid belief: a detection has no class scores");
+    factors.push_back(std::make_shared<const ViewpointSemanticFactor<SE2>>(
+        pose, objectKey(object), *detection.classVector, classIndex, viewpointModel_,
+        std::get<SE2>(header_.sensor.bodyToSensor)));
+  }
+  return factors;
+}
+
+FactorPtr HybridProblem::gateFactor(Key pose, int object, const Detection& detection) const {
+  if (header_.sensor.kind != SensorKind::RangeBearing) return factory_.detectionFactor(pose, objectKey(object), detection);
+  const FactorPtr checked = factory_.detectionFactor(pose, objectKey(object), detection);  // validates the detection
+  (void)checked;
+  const Vector2 rb = detection.geometry;
+  const Matrix2 covariance = detection.covariance;
+  const SE2& mount = std::get<SE2>(header_.sensor.bodyToSensor);
+  if (header_.landmarksHavePose) return CartesianGateFactor<SE2>::fromRangeBearing(pose, objectKey(object), rb, covariance, mount);
+  return CartesianGateFactor<Point2>::fromRangeBearing(pose, objectKey(object), rb, covariance, mount);
+}
+
+double HybridProblem::semanticLogConstant(const Detection& detection, int classIndex) const {
+  if (semantic_ != SemanticModelKind::Categorical) return 0.0;
+  const Vector likelihoods = semanticLikelihoods(header_, detection);
+  const double p = likelihoods(classIndex);
+  return p > 0.0 ? std::log(p) : -std::numeric_limits<double>::infinity();
+}
+
+}  // namespace semslam

@@ -1,0 +1,303 @@
+#include "semslam/hybrid/PropWeights.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <tuple>
+
+#include "semslam/association/AssociationGate.h"
+#include "semslam/association/MarginalLikelihood.h"
+#include "semslam/hybrid/Pruning.h"
+
+namespace semslam {
+namespace {
+
+constexpr double kNegativeInfinity = -std::numeric_limits<double>::infinity();
+
+/// Per parent: the factors of (detection, object, class), built once and shared by every candidate using them.
+class FactorCache {
+ public:
+  FactorCache(const HybridProblem& problem, int k, const std::vector<Detection>& detections)
+      : problem_(problem), pose_(poseKey(static_cast<std::uint64_t>(k))), detections_(detections) {}
+
+  const std::vector<FactorPtr>& get(int detection, int object, int classIndex) {
+    const auto key = std::make_tuple(detection, object, classIndex);
+    auto it = cache_.find(key);
+    if (it == cache_.end()) {
+      it = cache_.emplace(key, problem_.detectionFactors(pose_, object, detections_[detection], classIndex)).first;
+    }
+    return it->second;
+  }
+
+  const FactorPtr& gate(int detection, int object) {
+    const auto key = std::make_pair(detection, object);
+    auto it = gates_.find(key);
+    if (it == gates_.end()) it = gates_.emplace(key, problem_.gateFactor(pose_, object, detections_[detection])).first;
+    return it->second;
+  }
+
+ private:
+  const HybridProblem& problem_;
+  Key pose_;
+  const std::vector<Detection>& detections_;
+  std::map<std::tuple<int, int, int>, std::vector<FactorPtr>> cache_;
+  std::map<std::pair<int, int>, FactorPtr> gates_;
+};
+
+/// The keys of a candidate's integral: x_k, then its objects in order of first association.
+std::vector<Key> integralKeys(Key pose, const std::vector<int>& beta) {
+  std::vector<Key> keys{pose};
+  for (int object : beta) {
+    if (object >= 0) keys.push_back(HybridProblem::objectKey(object));
+  }
+  return keys;
+}
+
+/// Appends detection i → object (with class c when semantic) to a partial candidate.
+AssociationCandidate extend(const AssociationCandidate& partial, const HybridProblem& problem, FactorCache& cache,
+                            const Detection& detection, int i, int object, int classIndex, bool newObject) {
+  AssociationCandidate child = partial;
+  child.beta.push_back(object);
+  const std::vector<FactorPtr>& factors = cache.get(i, object, classIndex);
+  child.factors.insert(child.factors.end(), factors.begin(), factors.end());
+  child.gateFactors.push_back(cache.gate(i, object));
+  child.analyticFactors.push_back(child.gateFactors.back());
+  child.analyticFactors.insert(child.analyticFactors.end(), factors.begin() + 1, factors.end());  // semantic part
+  if (problem.enumeratesClasses()) {
+    child.logConstant += problem.semanticLogConstant(detection, classIndex);
+    if (newObject) {
+      child.classes[object] = classIndex;
+      child.logConstant -= std::log(static_cast<double>(problem.classes()));
+    }
+  }
+  return child;
+}
+
+/// The class choices for associating `object` in `partial`: its class if known, else every class.
+std::vector<int> classChoices(const HybridProblem& problem, const AssociationCandidate& partial, int object) {
+  if (!problem.enumeratesClasses()) return {0};
+  if (partial.classes[object] >= 0) return {partial.classes[object]};
+  std::vector<int> all(problem.classes());
+  for (int c = 0; c < problem.classes(); ++c) all[c] = c;
+  return all;
+}
+
+bool uses(const std::vector<int>& beta, int object) { return std::find(beta.begin(), beta.end(), object) != beta.end(); }
+
+void linearize(AssociationCandidate& candidate, const PropagatedParent& parent, Key pose) {
+  const double base = std::log(parent.component->weight) + candidate.logConstant;
+  if (candidate.factors.empty()) {
+    candidate.linearizedLogWeight = candidate.gateLogWeight = base;
+    candidate.innovationChi2 = 0.0;
+    return;
+  }
+  const JointMarginal marginal = subMarginal(parent.joint, integralKeys(pose, candidate.beta));
+  const Values& estimate = parent.smoother->estimate();
+  const LinearizedLikelihood gate = linearizedLikelihood(candidate.gateFactors, estimate, marginal);
+  candidate.gateLogWeight = base + gate.logLikelihood;
+  candidate.innovationChi2 = gate.innovationChi2;
+  if (candidate.analyticFactors.size() == candidate.gateFactors.size()) {
+    candidate.linearizedLogWeight = candidate.gateLogWeight;
+  } else {
+    candidate.linearizedLogWeight =
+        base + linearizedLikelihood(candidate.analyticFactors, estimate, marginal).logLikelihood;
+  }
+}
+
+AssociationCandidate root(const PropagatedParent& parent, std::size_t index) {
+  AssociationCandidate candidate;
+  candidate.parent = index;
+  candidate.classes = parent.component->classes;
+  return candidate;
+}
+
+std::vector<AssociationCandidate> wholeAssociations(const HybridProblem& problem,
+                                                    const std::vector<PropagatedParent>& parents, int k,
+                                                    const std::vector<Detection>& detections) {
+  const Key pose = poseKey(static_cast<std::uint64_t>(k));
+  std::vector<AssociationCandidate> all;
+  for (std::size_t p = 0; p < parents.size(); ++p) {
+    FactorCache cache(problem, k, detections);
+    std::vector<AssociationCandidate> partials{root(parents[p], p)};
+    for (int i = 0; i < static_cast<int>(detections.size()); ++i) {
+      std::vector<AssociationCandidate> next;
+      for (const AssociationCandidate& partial : partials) {
+        for (int object = 0; object < problem.objects(); ++object) {
+          if (uses(partial.beta, object)) continue;
+          const bool isNew = problem.enumeratesClasses() && partial.classes[object] < 0;
+          for (int c : classChoices(problem, partial, object)) {
+            next.push_back(extend(partial, problem, cache, detections[i], i, object, c, isNew));
+          }
+        }
+      }
+      partials = std::move(next);
+    }
+    for (AssociationCandidate& candidate : partials) {
+      linearize(candidate, parents[p], pose);
+      all.push_back(std::move(candidate));
+    }
+  }
+  return all;
+}
+
+std::vector<AssociationCandidate> oneDetectionAtATime(const HybridProblem& problem, const HybridOptions& options,
+                                                      const std::vector<PropagatedParent>& parents, int k,
+                                                      const std::vector<Detection>& detections,
+                                                      PropWeightsReport& report) {
+  const Key pose = poseKey(static_cast<std::uint64_t>(k));
+  const AssociationGate compatibility(options.jointCompatibility);
+  std::vector<FactorCache> caches;
+  std::vector<AssociationCandidate> partials;
+  for (std::size_t p = 0; p < parents.size(); ++p) {
+    caches.emplace_back(problem, k, detections);
+    partials.push_back(root(parents[p], p));
+    linearize(partials.back(), parents[p], pose);
+  }
+  for (int i = 0; i < static_cast<int>(detections.size()); ++i) {
+    std::vector<AssociationCandidate> next;
+    for (const AssociationCandidate& partial : partials) {
+      for (int object = 0; object < problem.objects(); ++object) {
+        if (uses(partial.beta, object)) continue;
+        const bool isNew = problem.enumeratesClasses() && partial.classes[object] < 0;
+        for (int c : classChoices(problem, partial, object)) {
+          AssociationCandidate child =
+              extend(partial, problem, caches[partial.parent], detections[i], i, object, c, isNew);
+          linearize(child, parents[partial.parent], pose);
+          int dimension = 0;
+          for (const FactorPtr& f : child.gateFactors) dimension += f->errorDimension();
+          if (child.innovationChi2 <= compatibility.threshold(dimension)) next.push_back(std::move(child));
+        }
+      }
+    }
+    if (next.empty()) {  // no partial association can take detection i: drop it everywhere
+      ++report.droppedDetections;
+      for (AssociationCandidate& partial : partials) partial.beta.push_back(-1);
+      continue;
+    }
+    // Prune partial hypotheses by linearised weight (the gate's ratio) and, with a component cap, keep at most
+    // ten times the cap.
+    std::vector<double> logWeights;
+    for (const AssociationCandidate& c : next) logWeights.push_back(c.gateLogWeight);
+    const int cap = options.maxComponents > 0 ? 10 * options.maxComponents : 0;
+    const PruningResult kept = pruneAndNormalize(logWeights, options.gateRatio, cap);
+    partials.clear();
+    for (std::size_t index : kept.kept) partials.push_back(std::move(next[index]));
+  }
+  return partials;
+}
+
+}  // namespace
+
+JointMarginal subMarginal(const JointMarginal& joint, const std::vector<Key>& keys) {
+  std::vector<int> dimensions;
+  int total = 0;
+  for (Key key : keys) {
+    dimensions.push_back(static_cast<int>(joint.block(key, key).rows()));
+    total += dimensions.back();
+  }
+  Matrix covariance(total, total);
+  int row = 0;
+  for (std::size_t a = 0; a < keys.size(); ++a) {
+    int column = 0;
+    for (std::size_t b = 0; b < keys.size(); ++b) {
+      covariance.block(row, column, dimensions[a], dimensions[b]) = joint.block(keys[a], keys[b]);
+      column += dimensions[b];
+    }
+    row += dimensions[a];
+  }
+  return JointMarginal(keys, dimensions, covariance);
+}
+
+std::vector<AssociationCandidate> propagateWeights(const HybridProblem& problem, const HybridOptions& options,
+                                                   const std::vector<PropagatedParent>& parents, int k,
+                                                   const std::vector<Detection>& detections, std::mt19937& rng,
+                                                   PropWeightsReport& report) {
+  std::vector<AssociationCandidate> candidates =
+      options.branching == Branching::WholeAssociation
+          ? wholeAssociations(problem, parents, k, detections)
+          : oneDetectionAtATime(problem, options, parents, k, detections, report);
+  report.candidates = candidates.size();
+  if (candidates.empty()) return candidates;
+
+  // Gate on the linearised weights.
+  double maximumGate = kNegativeInfinity;
+  for (const AssociationCandidate& c : candidates) maximumGate = std::max(maximumGate, c.gateLogWeight);
+  const double gateLevel = options.gateRatio > 1.0 ? maximumGate - std::log(options.gateRatio) : kNegativeInfinity;
+  double total = 0.0, lost = 0.0;
+  for (AssociationCandidate& c : candidates) {
+    const double w = std::isfinite(maximumGate) ? std::exp(c.gateLogWeight - maximumGate) : 0.0;
+    total += w;
+    c.gated = c.gateLogWeight < gateLevel;
+    if (c.gated) {
+      lost += w;
+      ++report.gated;
+    }
+  }
+  report.gateLostMass = total > 0.0 ? lost / total : 0.0;
+
+  const Key pose = poseKey(static_cast<std::uint64_t>(k));
+  const auto start = std::chrono::steady_clock::now();
+  bool anyPositive = false;
+  for (AssociationCandidate& c : candidates) {
+    if (c.gated) {
+      c.logWeight = kNegativeInfinity;
+      continue;
+    }
+    if (options.weights == WeightMethod::Analytic || c.factors.empty()) {
+      c.logWeight = c.linearizedLogWeight;
+    } else {
+      const PropagatedParent& parent = parents[c.parent];
+      const std::vector<Key> keys = integralKeys(pose, c.beta);
+      const JointMarginal marginal = subMarginal(parent.joint, keys);
+      SampleWeight visibility;
+      if (options.visibility) {
+        visibility = [&problem, &keys](const Values& sample) {
+          const SE2& robot = sample.at<SE2>(keys[0]);
+          std::vector<Point2> positions;
+          std::vector<int> beta;
+          for (std::size_t i = 1; i < keys.size(); ++i) {
+            const Vector p = MeasurementFactory::positionOf(sample.value(keys[i]));
+            positions.emplace_back(p(0), p(1));
+            beta.push_back(static_cast<int>(i - 1));
+          }
+          return problem.visibility().associationFeasible(robot, positions, beta) ? 1.0 : 0.0;
+        };
+      }
+      const SampledLikelihood likelihood =
+          sampledLikelihood(c.factors, parent.smoother->estimate(), marginal, options.samples, rng, visibility);
+      c.logWeight = std::log(parent.component->weight) + likelihood.logLikelihood + c.logConstant;
+      c.relativeStandardError = likelihood.relativeStandardError;
+      ++report.sampled;
+    }
+    if (std::isfinite(c.logWeight)) anyPositive = true;
+  }
+  report.samplingSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!anyPositive) {
+    report.fellBackToLinearized = true;
+    for (AssociationCandidate& c : candidates) c.logWeight = c.gated ? kNegativeInfinity : c.linearizedLogWeight;
+  }
+
+  // Agreement of the sampled weights with the linearised ones, over the candidates that were sampled.
+  if (options.weights == WeightMethod::Sampled && report.sampled > 0 && !report.fellBackToLinearized) {
+    std::vector<double> sampled, linear;
+    for (const AssociationCandidate& c : candidates) {
+      if (c.gated) continue;
+      sampled.push_back(c.logWeight);
+      linear.push_back(c.linearizedLogWeight);
+    }
+    const std::vector<double> ws = normalizeLogWeights(sampled), wl = normalizeLogWeights(linear);
+    double distance = 0.0;
+    for (std::size_t i = 0; i < ws.size(); ++i) distance += std::abs(ws[i] - wl[i]);
+    report.analyticTotalVariation = 0.5 * distance;
+    std::size_t index = 0;
+    for (const AssociationCandidate& c : candidates) {
+      if (c.gated) continue;
+      if (ws[index++] >= 1e-3) report.maxRelativeStandardError = std::max(report.maxRelativeStandardError, c.relativeStandardError);
+    }
+  }
+  return candidates;
+}
+
+}  // namespace semslam
