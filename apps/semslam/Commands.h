@@ -14,5 +14,6 @@ void addCheckCommand(CLI::App& app);
 void addSimulateCommand(CLI::App& app);
 void addConvertCommand(CLI::App& app);
 void addRunCommand(CLI::App& app);
+void addStudyCommand(CLI::App& app);
 
 }  // namespace semslam::cli

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   semslam::cli::addSimulateCommand(app);
   semslam::cli::addConvertCommand(app);
   semslam::cli::addRunCommand(app);
+  semslam::cli::addStudyCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
