@@ -41,6 +41,7 @@ struct RobustnessArguments {
   int threads = 2;
   int maxSteps = 0;
   double gate = AssociationGate::kDefaultConfidence;
+  double modelFloor = 1e-3;
   bool quiet = false;
   bool progress = false;
 };
@@ -98,6 +99,7 @@ void runRobustness(const RobustnessArguments& arguments) {
   options.threads = arguments.threads;
   options.maxSteps = arguments.maxSteps;
   options.slam.gateConfidence = arguments.gate;
+  options.modelMisclassificationFloor = arguments.modelFloor;
   try {
     validateRobustnessOptions(options);
   } catch (const std::invalid_argument& error) {
@@ -147,6 +149,7 @@ void runRobustness(const RobustnessArguments& arguments) {
       {"base_seed", options.baseSeed},
       {"max_steps", options.maxSteps},
       {"gate", options.slam.gateConfidence},
+      {"model_misclassification_floor", options.modelMisclassificationFloor},
       {"stuck_ratio", options.stuckRatio},
       {"stuck_margin_m", options.stuckMargin},
       {"threads", options.threads},
@@ -186,6 +189,10 @@ void addStudyRobustnessCommand(CLI::App& study) {
       ->capture_default_str();
   command->add_option("--gate", a->gate, "chi-square gate confidence (paper B: 0.9)")
       ->check(CLI::Range(1e-9, 1.0 - 1e-12))
+      ->capture_default_str();
+  command->add_option("--model-floor", a->modelFloor,
+                      "the methods' model misclassification rate is max(p, this); 0: exact (p = 0 then fails)")
+      ->check(CLI::Range(0.0, 0.5))
       ->capture_default_str();
   command->add_flag("--quiet", a->quiet, "no progress bar, no warnings");
   command->add_flag("--progress", a->progress, "show progress even when stderr is not a terminal");

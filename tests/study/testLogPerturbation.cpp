@@ -207,6 +207,24 @@ TEST(LogPerturbation, RateZeroGivesTrueLabelsAndRatesAreNested) {
   EXPECT_GT(wrongHigh, wrongLow);
 }
 
+TEST(LogPerturbation, ModelFloorOnlyChangesTheHeaderRate) {
+  const MeasurementLog log = syntheticLog(2, 20, 5);
+  LogPerturbation exact;
+  exact.misclassification = 0.0;
+  LogPerturbation floored = exact;
+  floored.modelMisclassificationFloor = 1e-3;
+  const MeasurementLog a = perturbLog(log, exact, 4), b = perturbLog(log, floored, 4);
+  EXPECT_EQ(a.header.classifier.misclassification, 0.0);
+  EXPECT_EQ(b.header.classifier.misclassification, 1e-3);
+  for (std::size_t k = 0; k < log.steps.size(); ++k) {
+    for (std::size_t j = 0; j < log.steps[k].detections.size(); ++j) {
+      EXPECT_EQ(*a.steps[k].detections[j].label, *b.steps[k].detections[j].label);
+    }
+  }
+  floored.misclassification = 0.2;  // above the floor: the exact rate
+  EXPECT_EQ(perturbLog(log, floored, 4).header.classifier.misclassification, 0.2);
+}
+
 TEST(LogPerturbation, TrueClassFromLandmarkTruthOrIdModClasses) {
   LogHeader header;
   header.classes = 4;

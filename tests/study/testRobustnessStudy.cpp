@@ -23,7 +23,7 @@ const MeasurementLog& tinyLog() {
 RobustnessStudyOptions tinyOptions() {
   RobustnessStudyOptions options;
   options.noiseScales = {0, 2};
-  options.misclassificationRates = {0.1, 0.3};
+  options.misclassificationRates = {0, 0.1};  // 0: the model floor keeps the pipeline alive
   options.seeds = 2;
   options.threads = 2;
   return options;
@@ -83,8 +83,8 @@ TEST_F(RobustnessStudyTest, RowsAreCompleteAndInOrder) {
   }
   EXPECT_EQ(rows[0].level, 0.0);
   EXPECT_EQ(rows[10].level, 2.0);
-  EXPECT_EQ(rows[20].level, 0.1);
-  EXPECT_EQ(rows[30].level, 0.3);
+  EXPECT_EQ(rows[20].level, 0.0);
+  EXPECT_EQ(rows[30].level, 0.1);
 }
 
 TEST_F(RobustnessStudyTest, KnownAssociationsAreExact) {
@@ -119,7 +119,7 @@ TEST_F(RobustnessStudyTest, SeedsArePaired) {
   }
   // known on the misclassification sweep's (0.1, seed s) cells equals the full study's.
   for (int seed = 0; seed < 2; ++seed) {
-    const RobustnessRow& full = twoThreads_->rows[20 + seed * 5];
+    const RobustnessRow& full = twoThreads_->rows[30 + seed * 5];
     ASSERT_EQ(full.method, "known");
     EXPECT_EQ(full.level, 0.1);
     EXPECT_EQ(study.rows[4 + seed * 2].ateRmse, full.ateRmse);

@@ -137,7 +137,13 @@ MeasurementLog perturbLog(const MeasurementLog& log, const LogPerturbation& pert
   }
   std::mt19937 noise = perturbationStream(seed, 1), labels = perturbationStream(seed, 2);
   const MeasurementLog noisy = addOdometryNoise(*source, perturbation.odometryNoiseScale, noise, perturbation.baseline);
-  return redrawLabels(noisy, perturbation.misclassification, labels);
+  if (!(perturbation.modelMisclassificationFloor >= 0.0 && perturbation.modelMisclassificationFloor < 1.0)) {
+    throw std::invalid_argument("perturbation: the model misclassification floor must be in [0, 1)");
+  }
+  MeasurementLog out = redrawLabels(noisy, perturbation.misclassification, labels);
+  out.header.classifier.misclassification =
+      std::max(perturbation.misclassification, perturbation.modelMisclassificationFloor);
+  return out;
 }
 
 }  // namespace semslam

@@ -64,12 +64,16 @@ int trueLandmarkClass(const LogHeader& header, int landmarkId);
 MeasurementLog redrawLabels(const MeasurementLog& log, double misclassification, std::mt19937& rng);
 
 /// One cell's perturbation: noise of `scale` from the stream (seed, noise) and labels at rate p from the stream
-/// (seed, labels); `maxSteps` > 0 truncates the log to its first maxSteps steps first.
+/// (seed, labels); `maxSteps` > 0 truncates the log to its first maxSteps steps first; the model floor below.
 struct LogPerturbation {
   double odometryNoiseScale = 0.0;
   double misclassification = 0.1;
   int maxSteps = 0;
   OdometryNoiseBaseline baseline;
+  /// The header's model rate becomes max(p, modelMisclassificationFloor) (labels are still drawn at p): at p = 0
+  /// the exact model gives impossible (−∞) label likelihoods, on which paper B's pipeline throws ("a detection
+  /// impossible under every class") as soon as a wrong association meets a confident class belief.
+  double modelMisclassificationFloor = 0.0;
 };
 
 /// The streams of one study seed: std::mt19937 through std::seed_seq with the words

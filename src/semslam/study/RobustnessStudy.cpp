@@ -61,6 +61,9 @@ void validateRobustnessOptions(const RobustnessStudyOptions& options) {
   if (options.seeds < 1) throw std::invalid_argument("seeds: must be >= 1");
   if (options.threads < 1) throw std::invalid_argument("threads: must be >= 1");
   if (options.maxSteps < 0) throw std::invalid_argument("max steps: must be >= 0");
+  if (!(options.modelMisclassificationFloor >= 0.0 && options.modelMisclassificationFloor < 1.0)) {
+    throw std::invalid_argument("model misclassification floor: must be in [0, 1)");
+  }
   if (!(options.stuckRatio > 0.0) || !(options.stuckMargin >= 0.0)) {
     throw std::invalid_argument("stuck: ratio must be > 0 and margin >= 0");
   }
@@ -77,6 +80,7 @@ std::vector<RobustnessCell> robustnessCells(const RobustnessStudyOptions& option
         cell.seed = seed;
         cell.perturbation.baseline = options.baseline;
         cell.perturbation.maxSteps = options.maxSteps;
+        cell.perturbation.modelMisclassificationFloor = options.modelMisclassificationFloor;
         cell.perturbation.odometryNoiseScale =
             axis == RobustnessAxis::OdometryNoise ? level : options.misclassificationSweepNoiseScale;
         cell.perturbation.misclassification =

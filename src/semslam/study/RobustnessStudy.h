@@ -44,6 +44,9 @@ struct RobustnessStudyOptions {
   OdometryNoiseBaseline baseline;
   double stuckRatio = 3.0;
   double stuckMargin = 0.1;  ///< m
+  /// The methods' model rate is max(p, this) (LogPerturbation::modelMisclassificationFloor): p = 0 with the exact
+  /// model makes the pipeline throw; 0 disables the floor (such runs are then recorded as failed).
+  double modelMisclassificationFloor = 1e-3;
   /// Called after every finished run (cell × method) with (finished, total), from the worker threads but never
   /// concurrently.
   std::function<void(int, int)> progress;
