@@ -105,7 +105,7 @@ def main():
             if r == 0:
                 axes[r][c].set_title(f"({'ab'[c]}) {label}")
     fig.legend(handles=legend_handles(methods), loc="upper center", ncol=len(methods), frameon=False)
-    fig.tight_layout(rect=(0, 0, 1, 1 - 0.35 / len(metrics)))
+    fig.tight_layout(rect=(0, 0, 1, 1 - 0.45 / (3.2 * len(metrics))))
     out = os.path.join(args.folder, "robustness.png")
     fig.savefig(out, dpi=120)
     plt.close(fig)
