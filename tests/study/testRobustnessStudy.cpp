@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -46,26 +47,15 @@ std::string withoutTimes(const std::string& csv) {
   return out;
 }
 
-class RobustnessStudyTest : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    RobustnessStudyOptions options = tinyOptions();
-    twoThreads_ = new RobustnessStudy(runRobustnessStudy(tinyLog(), options));
-    options.threads = 1;
-    oneThread_ = new RobustnessStudy(runRobustnessStudy(tinyLog(), options));
-  }
-  static void TearDownTestSuite() {
-    delete twoThreads_;
-    delete oneThread_;
-  }
-  static RobustnessStudy* twoThreads_;
-  static RobustnessStudy* oneThread_;
-};
-RobustnessStudy* RobustnessStudyTest::twoThreads_ = nullptr;
-RobustnessStudy* RobustnessStudyTest::oneThread_ = nullptr;
+// One test for the whole tiny study (ctest runs every test in its own process: a fixture would redo the study).
+TEST(RobustnessStudy, TinyStudy) {
+  RobustnessStudyOptions options = tinyOptions();
+  const RobustnessStudy twoThreads = runRobustnessStudy(tinyLog(), options);
+  options.threads = 1;
+  const RobustnessStudy oneThread = runRobustnessStudy(tinyLog(), options);
 
-TEST_F(RobustnessStudyTest, RowsAreCompleteAndInOrder) {
-  const std::vector<RobustnessRow>& rows = twoThreads_->rows;
+  // Rows are complete and in order.
+  const std::vector<RobustnessRow>& rows = twoThreads.rows;
   ASSERT_EQ(rows.size(), 2u * 2u * 2u * 5u);  // axes x levels x seeds x methods
   const std::vector<AssociationStrategy> methods = allStrategies();
   for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -80,60 +70,44 @@ TEST_F(RobustnessStudyTest, RowsAreCompleteAndInOrder) {
     EXPECT_TRUE(row.landmarksTrue.has_value());
     const bool maxMixture = row.method == "mm" || row.method == "mm-nh";
     EXPECT_EQ(row.stuck.has_value(), maxMixture) << row.method;
+    if (row.method == "known") EXPECT_EQ(row.daAccuracy, 1.0);
   }
   EXPECT_EQ(rows[0].level, 0.0);
   EXPECT_EQ(rows[10].level, 2.0);
   EXPECT_EQ(rows[20].level, 0.0);
   EXPECT_EQ(rows[30].level, 0.1);
-}
 
-TEST_F(RobustnessStudyTest, KnownAssociationsAreExact) {
-  for (const RobustnessRow& row : twoThreads_->rows) {
-    if (row.method == "known") EXPECT_EQ(row.daAccuracy, 1.0);
-  }
-}
+  // The same CSV with one and two threads (but for the wall-clock times).
+  EXPECT_EQ(withoutTimes(robustnessCsv(oneThread.rows)), withoutTimes(robustnessCsv(twoThreads.rows)));
 
-TEST_F(RobustnessStudyTest, SameCsvWithOneAndTwoThreads) {
-  EXPECT_EQ(withoutTimes(robustnessCsv(oneThread_->rows)), withoutTimes(robustnessCsv(twoThreads_->rows)));
-}
+  // Summary: one row per (axis, level, method).
+  const std::string summary = robustnessSummaryCsv(rows);
+  EXPECT_EQ(std::count(summary.begin(), summary.end(), '\n'), 1 + 2 * 2 * 5);
+  EXPECT_EQ(summary.rfind("axis,level,method,n,ate_mean", 0), 0u);
 
-TEST_F(RobustnessStudyTest, SeedsArePaired) {
-  // The noise sweep's cells at scale 2 / misclassification 0.1 differ from those at scale 0 only in the noise; the
-  // misclassification sweep's cells at 0.1 run at scale 1. Run one more study whose two sweeps meet at (1, 0.1),
-  // with `known` alone: its results must equal the full study's for the same cells (every method sees the same
-  // log, whoever else runs on it), and the two sweeps' copies of the shared cell must be equal.
-  RobustnessStudyOptions options = tinyOptions();
+  // Paired seeds. A second study whose two sweeps meet at (s = 1, p = 0.1), with known and ml only: the two
+  // sweeps' copies of the shared cell are equal, and known's results equal the full study's on the same cells
+  // (every method sees the cell's one log, whoever else runs on it).
+  options = tinyOptions();
   options.noiseScales = {1};
   options.misclassificationRates = {0.1};
   options.methods = {AssociationStrategy::Known, AssociationStrategy::MaximumLikelihood};
-  const RobustnessStudy study = runRobustnessStudy(tinyLog(), options);
-  ASSERT_EQ(study.rows.size(), 2u * 2u * 2u);
+  const RobustnessStudy pair = runRobustnessStudy(tinyLog(), options);
+  ASSERT_EQ(pair.rows.size(), 2u * 2u * 2u);
   for (int seed = 0; seed < 2; ++seed) {
     for (int m = 0; m < 2; ++m) {
-      const RobustnessRow& noise = study.rows[seed * 2 + m];
-      const RobustnessRow& rate = study.rows[4 + seed * 2 + m];
+      const RobustnessRow& noise = pair.rows[seed * 2 + m];
+      const RobustnessRow& rate = pair.rows[4 + seed * 2 + m];
       EXPECT_EQ(noise.ateRmse, rate.ateRmse);
       EXPECT_EQ(noise.daAccuracy, rate.daAccuracy);
       EXPECT_EQ(noise.landmarksEstimated, rate.landmarksEstimated);
     }
-  }
-  // known on the misclassification sweep's (0.1, seed s) cells equals the full study's.
-  for (int seed = 0; seed < 2; ++seed) {
-    const RobustnessRow& full = twoThreads_->rows[30 + seed * 5];
+    const RobustnessRow& full = rows[30 + seed * 5];  // misclassification 0.1 (at s = 1), seed, known
     ASSERT_EQ(full.method, "known");
     EXPECT_EQ(full.level, 0.1);
-    EXPECT_EQ(study.rows[4 + seed * 2].ateRmse, full.ateRmse);
+    EXPECT_EQ(pair.rows[4 + seed * 2].ateRmse, full.ateRmse);
+    EXPECT_EQ(pair.rows[4 + seed * 2].rotRmse, full.rotRmse);
   }
-}
-
-TEST_F(RobustnessStudyTest, SummaryHasOneRowPerAxisLevelMethod) {
-  const std::string summary = robustnessSummaryCsv(twoThreads_->rows);
-  std::istringstream in(summary);
-  std::string line;
-  int lines = 0;
-  while (std::getline(in, line)) ++lines;
-  EXPECT_EQ(lines, 1 + 2 * 2 * 5);
-  EXPECT_EQ(summary.rfind("axis,level,method,n,ate_mean", 0), 0u);
 }
 
 TEST(RobustnessStudy, StudentIntervalMatchesReference) {
