@@ -15,5 +15,8 @@ void addSimulateCommand(CLI::App& app);
 void addConvertCommand(CLI::App& app);
 void addRunCommand(CLI::App& app);
 void addStudyCommand(CLI::App& app);
+/// Subcommands of `study` (StudyCommand.cpp).
+void addStudyHybridCommand(CLI::App& study);
+void addStudyRobustnessCommand(CLI::App& study);
 
 }  // namespace semslam::cli

@@ -1,0 +1,168 @@
+// RobustnessStudy: a tiny study on a simulated log (2 levels per axis, 2 seeds): the rows are complete and in
+// order, seeds are paired (the overlapping cell of both sweeps, and a method's result does not depend on which
+// other methods run), the CSV is identical with 1 and 2 threads, stuck is defined for mm / mm-nh only; the t
+// interval; and the CLI: a small run writes its files, bad input exits 2.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "semslam/study/RobustnessStudy.h"
+#include "study/StudyTesting.h"
+#include "support/RunCommand.h"
+
+namespace semslam {
+namespace {
+
+const MeasurementLog& tinyLog() {
+  static const MeasurementLog log = test::smallSemanticLog(40);
+  return log;
+}
+
+RobustnessStudyOptions tinyOptions() {
+  RobustnessStudyOptions options;
+  options.noiseScales = {0, 2};
+  options.misclassificationRates = {0, 0.1};  // 0: the model floor keeps the pipeline alive
+  options.seeds = 2;
+  options.threads = 2;
+  return options;
+}
+
+/// The CSV without its time_s column (a wall-clock time).
+std::string withoutTimes(const std::string& csv) {
+  std::istringstream in(csv);
+  std::string line, out;
+  while (std::getline(in, line)) {
+    std::vector<std::string> fields;
+    std::stringstream cells(line);
+    std::string field;
+    while (std::getline(cells, field, ',')) fields.push_back(field);
+    if (line.back() == ',') fields.push_back("");
+    fields.erase(fields.begin() + 9);
+    for (std::size_t i = 0; i < fields.size(); ++i) out += (i ? "," : "") + fields[i];
+    out += "\n";
+  }
+  return out;
+}
+
+// One test for the whole tiny study (ctest runs every test in its own process: a fixture would redo the study).
+TEST(RobustnessStudy, TinyStudy) {
+  RobustnessStudyOptions options = tinyOptions();
+  const RobustnessStudy twoThreads = runRobustnessStudy(tinyLog(), options);
+  options.threads = 1;
+  const RobustnessStudy oneThread = runRobustnessStudy(tinyLog(), options);
+
+  // Rows are complete and in order.
+  const std::vector<RobustnessRow>& rows = twoThreads.rows;
+  ASSERT_EQ(rows.size(), 2u * 2u * 2u * 5u);  // axes x levels x seeds x methods
+  const std::vector<AssociationStrategy> methods = allStrategies();
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const RobustnessRow& row = rows[i];
+    const std::size_t cell = i / 5;
+    EXPECT_EQ(row.method, strategyName(methods[i % 5]));
+    EXPECT_EQ(row.axis, cell < 4 ? RobustnessAxis::OdometryNoise : RobustnessAxis::Misclassification);
+    EXPECT_EQ(row.seed, static_cast<int>(cell % 2));
+    EXPECT_TRUE(row.error.empty()) << row.error;
+    EXPECT_TRUE(std::isfinite(row.ateRmse)) << row.method;
+    EXPECT_TRUE(std::isfinite(row.daAccuracy)) << row.method;
+    EXPECT_TRUE(row.landmarksTrue.has_value());
+    const bool maxMixture = row.method == "mm" || row.method == "mm-nh";
+    EXPECT_EQ(row.stuck.has_value(), maxMixture) << row.method;
+    if (row.method == "known") EXPECT_EQ(row.daAccuracy, 1.0);
+  }
+  EXPECT_EQ(rows[0].level, 0.0);
+  EXPECT_EQ(rows[10].level, 2.0);
+  EXPECT_EQ(rows[20].level, 0.0);
+  EXPECT_EQ(rows[30].level, 0.1);
+
+  // The same CSV with one and two threads (but for the wall-clock times).
+  EXPECT_EQ(withoutTimes(robustnessCsv(oneThread.rows)), withoutTimes(robustnessCsv(twoThreads.rows)));
+
+  // Summary: one row per (axis, level, method).
+  const std::string summary = robustnessSummaryCsv(rows);
+  EXPECT_EQ(std::count(summary.begin(), summary.end(), '\n'), 1 + 2 * 2 * 5);
+  EXPECT_EQ(summary.rfind("axis,level,method,n,ate_mean", 0), 0u);
+
+  // Paired seeds. A second study whose two sweeps meet at (s = 1, p = 0.1), with known and ml only: the two
+  // sweeps' copies of the shared cell are equal, and known's results equal the full study's on the same cells
+  // (every method sees the cell's one log, whoever else runs on it).
+  options = tinyOptions();
+  options.noiseScales = {1};
+  options.misclassificationRates = {0.1};
+  options.methods = {AssociationStrategy::Known, AssociationStrategy::MaximumLikelihood};
+  const RobustnessStudy pair = runRobustnessStudy(tinyLog(), options);
+  ASSERT_EQ(pair.rows.size(), 2u * 2u * 2u);
+  for (int seed = 0; seed < 2; ++seed) {
+    for (int m = 0; m < 2; ++m) {
+      const RobustnessRow& noise = pair.rows[seed * 2 + m];
+      const RobustnessRow& rate = pair.rows[4 + seed * 2 + m];
+      EXPECT_EQ(noise.ateRmse, rate.ateRmse);
+      EXPECT_EQ(noise.daAccuracy, rate.daAccuracy);
+      EXPECT_EQ(noise.landmarksEstimated, rate.landmarksEstimated);
+    }
+    const RobustnessRow& full = rows[30 + seed * 5];  // misclassification 0.1 (at s = 1), seed, known
+    ASSERT_EQ(full.method, "known");
+    EXPECT_EQ(full.level, 0.1);
+    EXPECT_EQ(pair.rows[4 + seed * 2].ateRmse, full.ateRmse);
+    EXPECT_EQ(pair.rows[4 + seed * 2].rotRmse, full.rotRmse);
+  }
+}
+
+TEST(RobustnessStudy, StudentIntervalMatchesReference) {
+  EXPECT_NEAR(studentT975(1), 12.706204736, 1e-8);
+  EXPECT_NEAR(studentT975(9), 2.262157163, 1e-8);
+  EXPECT_NEAR(studentT975(40), 2.021075383, 1e-6);   // Cornish–Fisher
+  EXPECT_NEAR(studentT975(100), 1.983971518, 1e-6);
+  const MeanInterval interval = meanInterval({1.0, 2.0, 3.0, 4.0, std::nan("")});
+  EXPECT_EQ(interval.n, 4);
+  EXPECT_DOUBLE_EQ(interval.mean, 2.5);
+  const double half = 3.182446305284263 * std::sqrt(5.0 / 3.0) / 2.0;
+  EXPECT_NEAR(interval.low, 2.5 - half, 1e-12);
+  EXPECT_NEAR(interval.high, 2.5 + half, 1e-12);
+  EXPECT_TRUE(std::isnan(meanInterval({1.0}).low));
+}
+
+TEST(RobustnessStudy, InvalidOptionsThrow) {
+  RobustnessStudyOptions options = tinyOptions();
+  options.noiseScales = {};
+  EXPECT_THROW(validateRobustnessOptions(options), std::invalid_argument);
+  options = tinyOptions();
+  options.noiseScales = {-1};
+  EXPECT_THROW(validateRobustnessOptions(options), std::invalid_argument);
+  options = tinyOptions();
+  options.misclassificationRates = {1.0};
+  EXPECT_THROW(validateRobustnessOptions(options), std::invalid_argument);
+  options = tinyOptions();
+  options.methods = {};
+  EXPECT_THROW(validateRobustnessOptions(options), std::invalid_argument);
+}
+
+TEST(StudyCommand, SmallRunWritesItsFilesAndBadInputExitsTwo) {
+  test::StudyScratch scratch;
+  const std::string log = scratch.file("log.jsonl");
+  writeMeasurementLog(log, test::smallSemanticLog(20));
+  const std::string out = scratch.file("out");
+  const std::string base = "study robustness --log \"" + log + "\" --out \"" + out + "\" --seeds 1 --quiet ";
+  const test::CommandResult ok =
+      test::runSemslam(base + "--methods known,mm --odom-noise-scale 0,1 --misclassification 0.2");
+  ASSERT_EQ(ok.exitCode, 0) << ok.output;
+  const std::string csv = test::fileBytes(out + "/robustness.csv");
+  EXPECT_EQ(csv.rfind("axis,level,seed,method,ate_rmse,rot_rmse,da_accuracy,landmarks_estimated,landmarks_true,"
+                      "time_s,stuck\n",
+                      0),
+            0u);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 3 * 2);
+  EXPECT_FALSE(test::fileBytes(out + "/robustness_summary.csv").empty());
+  EXPECT_FALSE(test::fileBytes(out + "/study.json").empty());
+
+  for (const std::string bad : {"--methods known,magic", "--odom-noise-scale ,", "--odom-noise-scale=-1",
+                                "--misclassification 1", "--misclassification 0.1,x", "--seeds 0"}) {
+    const test::CommandResult result = test::runSemslam(base + bad);
+    EXPECT_EQ(result.exitCode, 2) << bad << ": " << result.output;
+  }
+}
+
+}  // namespace
+}  // namespace semslam
