@@ -157,7 +157,14 @@ void SemanticSlam::addStep(const TimeStep& step) {
         associations.add(factory_.detectionFactor(pose, landmarks_[index].key, record.measurement));
         landmarks_[index].classBelief.update(record.semanticLikelihoods);
       } else {
-        for (const FactorPtr& factor : associationFactors(record)) associations.add(factor);
+        const std::vector<FactorPtr> factors = associationFactors(record);
+        if (record.mixture && options_.warmStart) {
+          // Warm start: this solve uses the most likely candidate; the mixture replaces it below.
+          const int best = record.candidates[argmax(record.weights)];
+          associations.add(factory_.detectionFactor(pose, landmarks_[best].key, record.measurement));
+        } else {
+          for (const FactorPtr& factor : factors) associations.add(factor);
+        }
         for (std::size_t c = 0; c < record.candidates.size(); ++c) {
           landmarks_[record.candidates[c]].classBelief.update(record.semanticLikelihoods, record.weights[c]);
         }
@@ -178,6 +185,15 @@ void SemanticSlam::addStep(const TimeStep& step) {
       count = record.candidates.size();  // gpda: one per candidate
     }
     for (std::size_t c = 0; c < count; ++c) record.factors.push_back(indices.at(next++));
+  }
+  if (options_.warmStart) {
+    bool switched = false;
+    for (std::size_t r = firstRecordOfStep_.back(); r < records_.size(); ++r) {
+      if (!records_[r].mixture) continue;
+      smoother_->replaceFactor(records_[r].factors.at(0), records_[r].mixture);
+      switched = true;
+    }
+    if (switched) smoother_->update();
   }
   if (options_.strategy == AssociationStrategy::Gpda && options_.emIterations > 0) {
     const int firstStep = std::max(0, k + 1 - options_.emWindow);

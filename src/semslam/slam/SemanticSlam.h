@@ -15,7 +15,9 @@
 //      the null hypothesis, the detection's factor to the most likely candidate with standard deviations scaled by
 //      nullSigmaScale, with weight nullWeight (the candidates share 1 − nullWeight); gpda adds one factor per
 //      candidate whose information is scaled by w_l;
-//   4. the smoother re-solves; gpda then runs emIterations E-steps over the detections of the last emWindow steps
+//   4. the smoother re-solves (mm, mm-nh with warmStart: first with each detection's most likely candidate, then
+//      again with the mixtures, so that they choose their components near the step's solution rather than at the
+//      odometry prediction, where the null hypothesis would win every detection once the odometry is poor); gpda runs emIterations E-steps over the detections of the last emWindow steps
 //      (weights recomputed at the current estimate, Σ_joint = 0, i.e. N(z; h(X̂), R) times the semantic term, the
 //      same likelihood code with no state uncertainty) and M-steps (factors replaced, re-solve);
 //   5. class beliefs: each candidate's P(c | l) is updated with the detection's class likelihoods, tempered by its
@@ -49,7 +51,9 @@ struct SemanticSlamOptions {
   double nullSigmaScale = 100.0;  ///< mm-nh: the null hypothesis's standard deviations over the detection's
   int emWindow = 10;              ///< gpda: steps whose detections each E-step re-weights
   int emIterations = 2;           ///< gpda: E/M rounds per step (and 10 more over every detection at the end)
-  double minimumGpdaWeight = 1e-4;///< gpda: candidates below this weight get no factor
+  double minimumGpdaWeight = 1e-4;///< gpda: weights are clamped below at this
+  bool warmStart = true;          ///< mm, mm-nh: solve each step first with every detection's most likely
+                                  ///< candidate, then switch to the mixtures (docs/max-mixtures.md)
   SmootherFactory smoother;       ///< the back end; empty: BatchSmoother with Gauss-Newton
 };
 
