@@ -110,6 +110,8 @@ void addSemanticSlamOptions(CLI::App* command, RunArguments& arguments) {
   command->add_option("--em-iterations", arguments.slam.emIterations, "gpda: E/M rounds per step")
       ->check(CLI::Range(0, 1000))
       ->capture_default_str();
+  command->add_flag("--no-warm-start{false}", arguments.slam.warmStart,
+                    "mm, mm-nh: choose mixture components at the odometry prediction (docs/max-mixtures.md)");
   command->add_flag("--no-covariances", arguments.noCovariances,
                     "skip the marginal covariance of every pose (no NEES, no ellipses; faster)");
 }

@@ -102,10 +102,11 @@ FactorPtr MeasurementFactory::landmarkPriorFactor(Key landmark, const LandmarkPr
 }
 
 FactorPtr MeasurementFactory::detectionFactor(Key pose, Key landmark, const Detection& detection,
-                                              double sigmaScale) const {
+                                              double sigmaScale, SharedRobustKernel kernel) const {
   checkDetection(detection);
   if (!(sigmaScale > 0.0)) throw std::invalid_argument("sigma scale must be positive");
-  const SharedNoiseModel noise = NoiseModel::fromCovariance(detection.covariance * (sigmaScale * sigmaScale));
+  SharedNoiseModel noise = NoiseModel::fromCovariance(detection.covariance * (sigmaScale * sigmaScale));
+  if (kernel) noise = noise->withRobustKernel(std::move(kernel));
   const Vector& g = detection.geometry;
   switch (sensor_.kind) {
     case SensorKind::RangeBearing: {

@@ -18,6 +18,7 @@
 // std::invalid_argument naming it.
 
 #include "semslam/graph/Factor.h"
+#include "semslam/graph/RobustKernel.h"
 #include "semslam/graph/Values.h"
 #include "semslam/models/MeasurementLog.h"
 
@@ -37,8 +38,9 @@ class MeasurementFactory {
   FactorPtr posePriorFactor(Key pose, const PosePrior& prior) const;
   FactorPtr landmarkPriorFactor(Key landmark, const LandmarkPrior& prior) const;
   /// The detection's geometric factor between `pose` and `landmark`; sigmaScale multiplies its standard deviations
-  /// (a null hypothesis is the same factor with a broad Gaussian).
-  FactorPtr detectionFactor(Key pose, Key landmark, const Detection& detection, double sigmaScale = 1.0) const;
+  /// (a null hypothesis is the same factor with a broad Gaussian); an optional robust kernel on its whitened error.
+  FactorPtr detectionFactor(Key pose, Key landmark, const Detection& detection, double sigmaScale = 1.0,
+                            SharedRobustKernel kernel = nullptr) const;
 
   /// The pose after `odometry` from `previous`.
   Value predictPose(const Value& previous, const Odometry& odometry) const;

@@ -14,6 +14,8 @@ namespace semslam {
 namespace {
 
 constexpr double kGaugeSigma = 1e-6;
+/// Scale of the warm start's Cauchy kernel, in standard deviations of the detection.
+constexpr double kWarmStartCauchyScale = 3.0;
 
 /// Normalises log-weights into probabilities (log-sum-exp), in place.
 std::vector<double> normalizeLogWeights(const std::vector<double>& logWeights) {
@@ -159,9 +161,11 @@ void SemanticSlam::addStep(const TimeStep& step) {
       } else {
         const std::vector<FactorPtr> factors = associationFactors(record);
         if (record.mixture && options_.warmStart) {
-          // Warm start: this solve uses the most likely candidate; the mixture replaces it below.
+          // Warm start: this solve uses the most likely candidate under a Cauchy kernel (an outlier pulls little);
+          // the mixture replaces it below.
           const int best = record.candidates[argmax(record.weights)];
-          associations.add(factory_.detectionFactor(pose, landmarks_[best].key, record.measurement));
+          associations.add(factory_.detectionFactor(pose, landmarks_[best].key, record.measurement, 1.0,
+                                                    std::make_shared<CauchyKernel>(kWarmStartCauchyScale)));
         } else {
           for (const FactorPtr& factor : factors) associations.add(factor);
         }
