@@ -232,7 +232,7 @@ def hybrid_section(semslam, data, scratch, python):
     return lines
 
 
-SECTIONS = ["pose-graphs", "evo", "datasets", "hybrid", "max-mixtures"]
+SECTIONS = ["pose-graphs", "evo", "datasets", "hybrid", "max-mixtures", "robustness"]
 
 
 def section_lines(name, semslam, data, scratch):
@@ -248,6 +248,8 @@ def section_lines(name, semslam, data, scratch):
     elif name == "max-mixtures":
         body = results_max_mixtures.max_mixture_sections(semslam, data, scratch,
                                                          lambda command: shown(command, data))
+    elif name == "robustness":
+        body = results_max_mixtures.robustness_sections(semslam, data, scratch, lambda command: shown(command, data))
     else:
         sys.exit(f"make_results.py: unknown section {name} ({', '.join(SECTIONS)})")
     return [f"<!-- section:{name} -->"] + body + [f"<!-- end:{name} -->", ""]

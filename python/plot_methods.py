@@ -13,22 +13,14 @@ import csv
 import os
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-
-def read_tum(path):
-    xs, ys = [], []
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            fields = line.split()
-            xs.append(float(fields[1]))
-            ys.append(float(fields[2]))
-    return xs, ys
+from plot_run import read_tum  # noqa: E402
 
 
 def main():
