@@ -1,4 +1,5 @@
-// semslam run --method hybrid|hybrid-geometric and semslam study hybrid, end to end on small seeded inputs.
+// semslam run (paper A's hybrid methods and paper B's five strategies) and semslam study hybrid, end to end on
+// small seeded inputs.
 
 #include <gtest/gtest.h>
 
@@ -46,6 +47,38 @@ TEST(RunCommand, HybridWritesMetricsTrajectoryAndHypotheses) {
     }
     EXPECT_EQ(lines, 4);
   }
+  fs::remove_all(dir);
+}
+
+TEST(RunCommand, MaxMixtureMethodsWriteTheRunFolderAndMetrics) {
+  const fs::path dir = freshDirectory("semslam_run_semantic");
+  const fs::path log = dir / "run.jsonl";
+  ASSERT_EQ(runSemslam("simulate semantic --steps 30 --seed 4 --out \"" + log.string() + "\"").exitCode, 0);
+  for (const std::string method : {"known", "ml", "gpda", "mm", "mm-nh"}) {
+    const fs::path out = dir / method;
+    const auto result = runSemslam("run --method " + method + " --in \"" + log.string() + "\" --out \"" + out.string() + "\"");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    for (const char* file : {"metrics.json", "trajectory.tum", "truth.tum", "landmarks.csv", "covariances.csv"}) {
+      EXPECT_TRUE(fs::exists(out / file)) << method << ": " << file;
+    }
+    std::ifstream metricsFile(out / "metrics.json");
+    const nlohmann::json metrics = nlohmann::json::parse(metricsFile);
+    EXPECT_EQ(metrics["method"], method);
+    EXPECT_GT(metrics["da_accuracy"].get<double>(), 0.8) << method;
+    std::ifstream associations(out / "associations.csv");
+    std::string header;
+    std::getline(associations, header);
+    EXPECT_EQ(header, "step,detection,landmark,weight,truth");
+  }
+  // The same run twice gives the same files, bit for bit.
+  const fs::path again = dir / "again";
+  ASSERT_EQ(runSemslam("run --method mm-nh --in \"" + log.string() + "\" --out \"" + again.string() + "\"").exitCode, 0);
+  for (const char* file : {"trajectory.tum", "landmarks.csv", "associations.csv"}) {
+    std::ifstream a(dir / "mm-nh" / file), b(again / file);
+    const std::string first((std::istreambuf_iterator<char>(a)), {}), second((std::istreambuf_iterator<char>(b)), {});
+    EXPECT_EQ(first, second) << file;
+  }
+  EXPECT_EQ(runSemslam("run --method mm-nh --gate 1.5 --in \"" + log.string() + "\" --out \"" + again.string() + "\"").exitCode, 2);
   fs::remove_all(dir);
 }
 
