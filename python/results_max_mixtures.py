@@ -140,7 +140,7 @@ ROBUSTNESS_LOGS = [
     ("MRCLAM Dataset 6, robot 1", "mrclam", "mrclam", "mrclam/MRCLAM_Dataset6",
      ["--robot", "1", "--classes", "3", "--misclassification", "0.1", "--keyframe-period", "1"], 300),
 ]
-ROBUSTNESS_STUDY = ["--methods", ",".join(METHODS), "--odom-noise-scale", "0,1,2,5,10",
+ROBUSTNESS_STUDY = ["--methods", ",".join(METHODS), "--odom-noise-scale", "0,1,2,5,10,20",
                     "--misclassification", "0,0.1,0.2,0.3,0.5", "--seeds", "10", "--threads", "2", "--quiet"]
 
 

@@ -17,7 +17,7 @@ constexpr double kGaugeSigma = 1e-6;
 /// Scale of the warm start's Cauchy kernel, in standard deviations of the detection.
 constexpr double kWarmStartCauchyScale = 3.0;
 
-/// Normalises log-weights into probabilities (log-sum-exp), in place.
+/// Normalises log-weights into probabilities (log-sum-exp); all −∞ gives the uniform distribution.
 std::vector<double> normalizeLogWeights(const std::vector<double>& logWeights) {
   const double maximum = *std::max_element(logWeights.begin(), logWeights.end());
   std::vector<double> weights;
@@ -75,7 +75,7 @@ int SemanticSlam::addLandmark(const Value& value, std::optional<int> truthId, Va
   return index;
 }
 
-void SemanticSlam::addFirstPose(const TimeStep& step, FactorGraph& factors, Values& values) {
+void SemanticSlam::addFirstPose(FactorGraph& factors, Values& values) {
   const Key pose = poseKey(0);
   values.insert(pose, factory_.initialPose(header_));
   if (header_.initialPose) {
@@ -90,7 +90,6 @@ void SemanticSlam::addFirstPose(const TimeStep& step, FactorGraph& factors, Valu
     const int index = addLandmark(factory_.landmarkValue(prior.mean), prior.id, values);
     factors.add(factory_.landmarkPriorFactor(landmarks_[index].key, prior));
   }
-  (void)step;
 }
 
 void SemanticSlam::addStep(const TimeStep& step) {
@@ -101,7 +100,7 @@ void SemanticSlam::addStep(const TimeStep& step) {
   Values newValues;
   if (k == 0) {
     if (step.odometry) throw std::invalid_argument("the first step must not have odometry");
-    addFirstPose(step, propagation, newValues);
+    addFirstPose(propagation, newValues);
   } else {
     if (!step.odometry) throw std::invalid_argument("step " + std::to_string(k) + " has no odometry");
     const Key previous = poseKeys_.back();
@@ -113,9 +112,9 @@ void SemanticSlam::addStep(const TimeStep& step) {
   truePoses_.push_back(step.truePose);
   firstRecordOfStep_.push_back(records_.size());
   const bool known = options_.strategy == AssociationStrategy::Known;
-  if (step.detections.empty() || known || landmarks_.empty()) {
-    // No marginals needed before associating: propagate and associate in one solve.
-  } else {
+  if (!step.detections.empty() && !known && !landmarks_.empty()) {
+    // The candidates' weights need the marginal of the propagated pose: solve before associating. (Otherwise
+    // propagation and association share one solve.)
     smoother_->update(propagation, newValues);
     propagation = FactorGraph();
     newValues = Values();

@@ -99,7 +99,7 @@ class SemanticSlam {
     ClassBelief classBelief;
   };
 
-  void addFirstPose(const TimeStep& step, FactorGraph& factors, Values& values);
+  void addFirstPose(FactorGraph& factors, Values& values);
   int addLandmark(const Value& value, std::optional<int> truthId, Values& values);
   /// Candidates and their normalised weights for `detection` at the current estimate (step 2).
   /// Landmarks created during this step are not candidates (the marginal predates them; a landmark produces at
