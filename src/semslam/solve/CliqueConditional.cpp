@@ -1,0 +1,37 @@
+#include "semslam/solve/CliqueConditional.h"
+
+#include <Eigen/Cholesky>
+
+namespace semslam {
+
+bool CliqueConditional::eliminate(Matrix& A, Vector& b, int frontalDimension, CliqueConditional& out) {
+  const int nf = frontalDimension;
+  const int ns = static_cast<int>(A.rows()) - nf;
+  Eigen::Ref<Matrix> frontalBlock = A.topLeftCorner(nf, nf);
+  Eigen::LLT<Eigen::Ref<Matrix>, Eigen::Lower> llt(frontalBlock);  // in place: L in the lower triangle
+  if (llt.info() != Eigen::Success) return false;
+  const auto L = A.topLeftCorner(nf, nf).triangularView<Eigen::Lower>();
+  for (int i = 0; i < nf; ++i) {
+    if (!(A(i, i) > 0.0)) return false;
+  }
+  out.R.setZero(nf, nf);
+  out.R.triangularView<Eigen::Upper>() = A.topLeftCorner(nf, nf).transpose();
+  out.T = A.topRightCorner(nf, ns);
+  L.solveInPlace(out.T);
+  out.z = b.head(nf);
+  L.solveInPlace(out.z);
+  out.marginalInformation = A.bottomRightCorner(ns, ns);
+  out.marginalInformation.noalias() -= out.T.transpose() * out.T;
+  out.marginalVector = b.tail(ns);
+  out.marginalVector.noalias() -= out.T.transpose() * out.z;
+  return true;
+}
+
+Vector CliqueConditional::solve(const Vector& separatorDelta) const {
+  Vector rhs = z;
+  if (T.cols() > 0) rhs.noalias() -= T * separatorDelta;
+  R.triangularView<Eigen::Upper>().solveInPlace(rhs);
+  return rhs;
+}
+
+}  // namespace semslam
