@@ -20,18 +20,19 @@ bool CliqueConditional::eliminate(Matrix& A, Vector& b, int frontalDimension, Cl
   L.solveInPlace(out.T);
   out.z = b.head(nf);
   L.solveInPlace(out.z);
+  // Ā = A_SS − TᵀT: a symmetric rank-nf update of the lower triangle, then mirrored.
   out.marginalInformation = A.bottomRightCorner(ns, ns);
-  out.marginalInformation.noalias() -= out.T.transpose() * out.T;
+  out.marginalInformation.selfadjointView<Eigen::Lower>().rankUpdate(out.T.transpose(), -1.0);
+  out.marginalInformation.triangularView<Eigen::StrictlyUpper>() = out.marginalInformation.transpose();
   out.marginalVector = b.tail(ns);
   out.marginalVector.noalias() -= out.T.transpose() * out.z;
   return true;
 }
 
-Vector CliqueConditional::solve(const Vector& separatorDelta) const {
-  Vector rhs = z;
-  if (T.cols() > 0) rhs.noalias() -= T * separatorDelta;
-  R.triangularView<Eigen::Upper>().solveInPlace(rhs);
-  return rhs;
+void CliqueConditional::solve(const Vector& separatorDelta, Vector& frontalDelta) const {
+  frontalDelta = z;
+  if (T.cols() > 0) frontalDelta.noalias() -= T * separatorDelta;
+  R.triangularView<Eigen::Upper>().solveInPlace(frontalDelta);
 }
 
 }  // namespace semslam

@@ -36,8 +36,8 @@ struct CliqueConditional {
   /// that the factors do not constrain). A and b are consumed.
   static bool eliminate(Matrix& A, Vector& b, int frontalDimension, CliqueConditional& out);
 
-  /// Δ_F = R⁻¹ (z − T Δ_S).
-  Vector solve(const Vector& separatorDelta) const;
+  /// Δ_F = R⁻¹ (z − T Δ_S), into `frontalDelta` (resized).
+  void solve(const Vector& separatorDelta, Vector& frontalDelta) const;
 };
 
 }  // namespace semslam

@@ -61,7 +61,9 @@ int IncrementalSmoother::addVariable(Key key, const Value& value) {
   variables_.push_back(std::move(variable));
   variableIds_.emplace(key, id);
   theta_.insert(key, value);
+  thetaById_.push_back(value);
   estimate_.insert(key, value);
+  estimateSlots_.push_back(const_cast<Value*>(&estimate_.value(key)));  // std::map nodes never move
   delta_.resize(delta_.size() + variables_.back().dimension, 0.0);
   isStale_.push_back(0);
   isCandidate_.push_back(0);
@@ -89,7 +91,8 @@ double IncrementalSmoother::deltaNorm(int variable) const {
 void IncrementalSmoother::relinearize(int variable) {
   Variable& v = variables_[variable];
   Eigen::Map<Vector> delta(delta_.data() + v.offset, v.dimension);
-  theta_.update(v.key, retract(theta_.value(v.key), delta));
+  thetaById_[variable] = retract(thetaById_[variable], delta);
+  theta_.update(v.key, thetaById_[variable]);
   delta.setZero();
   for (int slot : v.factors) slots_[slot].linearization.reset();
 }
@@ -260,19 +263,30 @@ std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked
   }
 
   // Local numbering of the re-eliminated variables.
-  std::unordered_map<int, int> local;
-  local.reserve(2 * m);
-  for (int i = 0; i < m; ++i) local.emplace(eliminated[i], i);
+  std::vector<int>& localIndex = scratch_.localIndex;
+  localIndex.resize(variables_.size(), -1);
+  for (int i = 0; i < m; ++i) localIndex[eliminated[i]] = i;
+  struct ResetLocal {  // leaves the scratch all −1 however this function exits
+    std::vector<int>& index;
+    const std::vector<int>& variables;
+    ~ResetLocal() {
+      for (int v : variables) index[v] = -1;
+    }
+  } resetLocal{localIndex, eliminated};
+  const auto local = [&](int v) { return localIndex[v]; };
 
   // Step 3: the factors whose variables all lie in the re-eliminated part (the others are summarised in orphans).
   std::vector<int> gathered;
   {
-    std::unordered_set<int> seen;
+    std::vector<int>& seen = scratch_.slotStamp;
+    seen.resize(slots_.size(), 0);
+    const int stamp = ++scratch_.stamp;
     for (int v : eliminated) {
       for (int slot : variables_[v].factors) {
-        if (!seen.insert(slot).second) continue;
+        if (seen[slot] == stamp) continue;
+        seen[slot] = stamp;
         bool inside = true;
-        for (int u : slots_[slot].variables) inside = inside && local.count(u);
+        for (int u : slots_[slot].variables) inside = inside && local(u) >= 0;
         if (inside) gathered.push_back(slot);
       }
     }
@@ -280,9 +294,21 @@ std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked
   for (int slot : gathered) {
     Slot& s = slots_[slot];
     if (!s.linearization) {
-      auto linearization = std::make_shared<LinearizedFactor>();
-      s.factor->linearize(theta_, *linearization);
-      s.linearization = std::move(linearization);
+      LinearizedFactor& lin = scratch_.linearized;
+      s.factor->linearize(theta_, lin);
+      auto contribution = std::make_shared<FactorContribution>();
+      int total = 0;
+      for (const Matrix& J : lin.jacobians) {
+        contribution->offsets.push_back(total);
+        total += static_cast<int>(J.cols());
+      }
+      Matrix J(lin.whitenedError.size(), total);
+      for (std::size_t p = 0; p < lin.jacobians.size(); ++p) {
+        J.middleCols(contribution->offsets[p], lin.jacobians[p].cols()) = lin.jacobians[p];
+      }
+      contribution->information.noalias() = J.transpose() * J;
+      contribution->vector.noalias() = -(J.transpose() * lin.whitenedError);
+      s.linearization = std::move(contribution);
     }
   }
 
@@ -290,8 +316,8 @@ std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked
   std::vector<std::vector<int>> neighbours(m);
   const auto connect = [&](const std::vector<int>& variables) {
     for (std::size_t p = 1; p < variables.size(); ++p) {
-      const int a = local.at(variables[p]);
-      for (std::size_t q = 0; q < p; ++q) neighbours[a].push_back(local.at(variables[q]));
+      const int a = local(variables[p]);
+      for (std::size_t q = 0; q < p; ++q) neighbours[a].push_back(local(variables[q]));
     }
   };
   for (int slot : gathered) connect(slots_[slot].variables);
@@ -387,7 +413,7 @@ std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked
   }
   for (int orphan : orphans) {
     int first = m;
-    for (int v : cliques_[orphan].separator) first = std::min(first, rank[local.at(v)]);
+    for (int v : cliques_[orphan].separator) first = std::min(first, rank[local(v)]);
     const int id = cliqueIds[cliqueOf[first]];
     cliques_[orphan].parent = id;
     cliques_[id].children.push_back(orphan);
@@ -398,17 +424,17 @@ std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked
   std::vector<std::vector<int>> factorsOfClique(newCount);
   for (int slot : gathered) {
     int first = m;
-    for (int v : slots_[slot].variables) first = std::min(first, rank[local.at(v)]);
+    for (int v : slots_[slot].variables) first = std::min(first, rank[local(v)]);
     factorsOfClique[cliqueOf[first]].push_back(slot);
   }
   std::vector<int> byLastFrontal(newCount);
   std::iota(byLastFrontal.begin(), byLastFrontal.end(), 0);
   std::sort(byLastFrontal.begin(), byLastFrontal.end(),
             [&](int a, int b) { return frontalRanks[a].back() < frontalRanks[b].back(); });
-  std::unordered_map<int, int> scalarOffset;
+  std::vector<int>& scalarOffset = scratch_.scalarOffset;
+  scalarOffset.resize(variables_.size());
   for (int i : byLastFrontal) {
     Clique& clique = cliques_[cliqueIds[i]];
-    scalarOffset.clear();
     int n = 0;
     for (int v : clique.frontals) {
       scalarOffset[v] = n;
@@ -421,35 +447,29 @@ std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked
     }
     Matrix A = Matrix::Zero(n, n);
     Vector b = Vector::Zero(n);
+    // Extend-add: each factor's information and each child's marginal, scattered scalar by scalar through the
+    // positions of their variables in this clique.
+    std::vector<int>& positions = scratch_.positions;
+    const auto scatter = [&](const std::vector<int>& variables, const Matrix& information, const Vector& vector) {
+      positions.clear();
+      for (int v : variables) {
+        for (int d = 0; d < variables_[v].dimension; ++d) positions.push_back(scalarOffset[v] + d);
+      }
+      const int size = static_cast<int>(positions.size());
+      for (int c = 0; c < size; ++c) {
+        double* column = A.data() + static_cast<Eigen::Index>(positions[c]) * n;
+        const double* source = information.data() + static_cast<Eigen::Index>(c) * size;
+        for (int r = 0; r < size; ++r) column[positions[r]] += source[r];
+        b[positions[c]] += vector[c];
+      }
+    };
     for (int slot : factorsOfClique[i]) {
       const Slot& s = slots_[slot];
-      const LinearizedFactor& lin = *s.linearization;
-      for (std::size_t p = 0; p < s.variables.size(); ++p) {
-        const int op = scalarOffset.at(s.variables[p]);
-        const Matrix& Jp = lin.jacobians[p];
-        b.segment(op, Jp.cols()).noalias() -= Jp.transpose() * lin.whitenedError;
-        for (std::size_t q = 0; q < s.variables.size(); ++q) {
-          const Matrix& Jq = lin.jacobians[q];
-          A.block(op, scalarOffset.at(s.variables[q]), Jp.cols(), Jq.cols()).noalias() += Jp.transpose() * Jq;
-        }
-      }
+      scatter(s.variables, s.linearization->information, s.linearization->vector);
     }
     for (int child : clique.children) {
       const Clique& c = cliques_[child];
-      const CliqueConditional& conditional = *c.conditional;
-      int ci = 0;
-      for (int u : c.separator) {
-        const int du = variables_[u].dimension;
-        const int ou = scalarOffset.at(u);
-        b.segment(ou, du) += conditional.marginalVector.segment(ci, du);
-        int cj = 0;
-        for (int w : c.separator) {
-          const int dw = variables_[w].dimension;
-          A.block(ou, scalarOffset.at(w), du, dw) += conditional.marginalInformation.block(ci, cj, du, dw);
-          cj += dw;
-        }
-        ci += du;
-      }
+      scatter(c.separator, c.conditional->marginalInformation, c.conditional->marginalVector);
     }
     auto conditional = std::make_shared<CliqueConditional>();
     if (!CliqueConditional::eliminate(A, b, nf, *conditional)) throw std::runtime_error(kNotPositiveDefinite);
@@ -483,7 +503,8 @@ void IncrementalSmoother::backSubstitute(const std::vector<int>& newCliques, dou
                                                                                 variable.dimension);
       ns += variable.dimension;
     }
-    const Vector frontalDelta = clique.conditional->solve(separatorDelta);
+    Vector& frontalDelta = scratch_.frontalDelta;
+    clique.conditional->solve(separatorDelta, frontalDelta);
     int nf = 0;
     for (int v : clique.frontals) {
       const Variable& variable = variables_[v];
@@ -540,9 +561,8 @@ void IncrementalSmoother::replaceFactor(FactorIndex index, FactorPtr factor) {
 const Values& IncrementalSmoother::estimate() const {
   for (int v : staleEstimates_) {
     const Variable& variable = variables_[v];
-    estimate_.update(variable.key, retract(theta_.value(variable.key),
-                                           Eigen::Map<const Vector>(delta_.data() + variable.offset,
-                                                                    variable.dimension)));
+    *estimateSlots_[v] =
+        retract(thetaById_[v], Eigen::Map<const Vector>(delta_.data() + variable.offset, variable.dimension));
     isStale_[v] = 0;
   }
   staleEstimates_.clear();
@@ -557,7 +577,14 @@ FactorGraph IncrementalSmoother::factors() const {
   return graph;
 }
 
-std::unique_ptr<Smoother> IncrementalSmoother::fork() const { return std::make_unique<IncrementalSmoother>(*this); }
+std::unique_ptr<Smoother> IncrementalSmoother::fork() const {
+  std::unique_ptr<IncrementalSmoother> copy(new IncrementalSmoother(*this));
+  // The copy's estimate is a new map: point its slots at its own nodes.
+  for (std::size_t v = 0; v < variables_.size(); ++v) {
+    copy->estimateSlots_[v] = const_cast<Value*>(&copy->estimate_.value(variables_[v].key));
+  }
+  return copy;
+}
 
 JointMarginal IncrementalSmoother::jointMarginal(const std::vector<Key>& keys) const {
   std::vector<int> requested;
@@ -656,46 +683,27 @@ JointMarginal IncrementalSmoother::jointMarginal(const std::vector<Key>& keys) c
 // ---- convergence -------------------------------------------------------------------------------------------
 
 OptimizationResult IncrementalSmoother::convergeAll(const OptimizerParams& params) {
-  OptimizationResult result;
-  result.initialChi2 = factors().chi2(estimate());
-  double chi2 = result.initialChi2;
-  while (true) {
-    if (result.iterations >= params.maxIterations) {
-      result.stopReason = "maximum number of iterations";
-      break;
-    }
-    forceFull_ = true;
-    try {
-      update();
-    } catch (...) {
-      forceFull_ = false;
-      throw;
-    }
-    forceFull_ = false;
-    ++result.iterations;
-    double step = 0.0;
-    for (double d : delta_) step = std::max(step, std::abs(d));
-    const double newChi2 = factors().chi2(estimate());
-    if (!(newChi2 <= chi2)) {  // undo the step: the linearization point is the previous estimate
-      std::fill(delta_.begin(), delta_.end(), 0.0);
-      for (int v = 0; v < static_cast<int>(variables_.size()); ++v) markStale(v);
-      result.stopReason = "a Gauss-Newton step increased chi2; kept the previous point";
-      break;
-    }
-    const double oldChi2 = chi2;
-    chi2 = newChi2;
-    if (oldChi2 - newChi2 <= params.relativeDecreaseTolerance * oldChi2) {
-      result.stopReason = "relative decrease of chi2 below tolerance";
-      result.converged = true;
-      break;
-    }
-    if (step <= params.stepTolerance) {
-      result.stopReason = "step below tolerance";
-      result.converged = true;
-      break;
-    }
+  // Batch Gauss-Newton (CHOLMOD) from the estimate, then the tree rebuilt at the optimum: θ ← optimum, Δ ← 0,
+  // every factor relinearized, everything re-eliminated and solved exactly (the step from the optimum is ~0).
+  const FactorGraph graph = factors();
+  if (graph.empty()) return OptimizationResult();
+  OptimizationResult result = optimize(graph, estimate(), params);
+  for (int v = 0; v < static_cast<int>(variables_.size()); ++v) {
+    Variable& variable = variables_[v];
+    theta_.update(variable.key, result.values.value(variable.key));
+    thetaById_[v] = theta_.value(variable.key);
+    std::fill(delta_.begin() + variable.offset, delta_.begin() + variable.offset + variable.dimension, 0.0);
+    markStale(v);
   }
-  result.finalChi2 = chi2;
+  for (Slot& slot : slots_) slot.linearization.reset();
+  forceFull_ = true;
+  try {
+    update();
+  } catch (...) {
+    forceFull_ = false;
+    throw;
+  }
+  forceFull_ = false;
   return result;
 }
 

@@ -83,11 +83,11 @@ class IncrementalSmoother final : public Smoother {
   FactorGraph factors() const override;
   std::unique_ptr<Smoother> fork() const override;
 
-  /// Gauss-Newton to convergence on the whole graph: each iteration relinearizes every variable at the estimate
-  /// and re-eliminates and solves the whole tree exactly; stops by the rules of Optimizer.h (relative decrease of
-  /// chi2, step size, iteration limit; a step that increases chi2 is undone). Pending replacements take effect.
-  /// Afterwards the linearization point is the estimate. Returns chi2, iterations and the stop reason (the
-  /// result's `values` are left empty: see estimate()).
+  /// Gauss-Newton to convergence on the whole graph: the batch optimizer (Optimizer.h, same stopping rules) from
+  /// the current estimate, then the tree rebuilt at its result: θ ← the optimum, every factor relinearized, the
+  /// whole tree re-ordered, re-eliminated and solved exactly. Pending replacements take effect. Afterwards the
+  /// linearization point is the optimum and the estimate is one (vanishing) Gauss-Newton step from it. Returns
+  /// the batch optimizer's result.
   OptimizationResult convergeAll(const OptimizerParams& params = {});
 
   /// θ: the point every factor is linearized at.
@@ -98,6 +98,10 @@ class IncrementalSmoother final : public Smoother {
   std::size_t factorEntries() const { return factorEntries_; }
 
  private:
+  // Copies only through fork(), which rebinds the estimate's slots.
+  IncrementalSmoother(const IncrementalSmoother&) = default;
+  IncrementalSmoother& operator=(const IncrementalSmoother&) = delete;
+
   struct Variable {
     Key key = 0;
     int dimension = 0;
@@ -105,10 +109,17 @@ class IncrementalSmoother final : public Smoother {
     std::vector<int> factors;  // slots in force touching it
     int clique = -1;           // the clique holding it as a frontal, −1 when it is not in the tree
   };
+  /// A factor linearized at θ, in information form over its variables: JᵀJ and −Jᵀr (whitened), computed once per
+  /// linearization and added into every clique elimination that gathers the factor.
+  struct FactorContribution {
+    Matrix information;
+    Vector vector;
+    std::vector<int> offsets;  // of each variable's block
+  };
   struct Slot {
     FactorPtr factor;  // null once removed
     std::vector<int> variables;
-    std::shared_ptr<const LinearizedFactor> linearization;  // at θ; null when stale
+    std::shared_ptr<const FactorContribution> linearization;  // at θ; null when stale
   };
   struct Clique {
     std::vector<int> frontals;   // in elimination order
@@ -136,6 +147,7 @@ class IncrementalSmoother final : public Smoother {
   std::vector<Variable> variables_;
   std::unordered_map<Key, int> variableIds_;
   Values theta_;
+  std::vector<Value> thetaById_;  // θ again, by variable id, for the estimate's refresh
   std::vector<double> delta_;
   std::vector<Slot> slots_;
   std::vector<int> pendingMarked_;  // variables of factors replaced since the last update
@@ -151,9 +163,26 @@ class IncrementalSmoother final : public Smoother {
   std::vector<int> relinearizationCandidates_;  // variables whose Δ changed since their last relinearization check
   std::vector<char> isCandidate_;
 
+  // Scratch of update(), indexed by variable: position in the re-eliminated part (−1 outside it) and scalar offset
+  // in the clique being eliminated. Not state: a fork starts with its own.
+  struct Scratch {
+    Scratch() = default;
+    Scratch(const Scratch&) {}
+    Scratch& operator=(const Scratch&) { return *this; }
+    std::vector<int> localIndex;
+    std::vector<int> scalarOffset;
+    std::vector<int> slotStamp;
+    std::vector<int> positions;
+    int stamp = 0;
+    LinearizedFactor linearized;
+    Vector frontalDelta;
+  };
+  Scratch scratch_;
+
   mutable Values estimate_;
   mutable std::vector<int> staleEstimates_;
   mutable std::vector<char> isStale_;
+  std::vector<Value*> estimateSlots_;  // by variable: its node in estimate_ (rebound by fork())
 };
 
 }  // namespace semslam
