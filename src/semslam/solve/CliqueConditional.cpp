@@ -4,7 +4,8 @@
 
 namespace semslam {
 
-bool CliqueConditional::eliminate(Matrix& A, Vector& b, int frontalDimension, CliqueConditional& out) {
+bool CliqueConditional::eliminate(Eigen::Ref<Matrix> A, Eigen::Ref<const Vector> b, int frontalDimension,
+                                  CliqueConditional& out) {
   const int nf = frontalDimension;
   const int ns = static_cast<int>(A.rows()) - nf;
   Eigen::Ref<Matrix> frontalBlock = A.topLeftCorner(nf, nf);

@@ -33,8 +33,9 @@ struct CliqueConditional {
 
   /// Eliminates the first `frontalDimension` scalar variables of the symmetric system (A, b) (both triangles of A
   /// filled). Returns false, leaving `out` unspecified, if A_FF is not numerically positive definite (a variable
-  /// that the factors do not constrain). A and b are consumed.
-  static bool eliminate(Matrix& A, Vector& b, int frontalDimension, CliqueConditional& out);
+  /// that the factors do not constrain). A is overwritten.
+  static bool eliminate(Eigen::Ref<Matrix> A, Eigen::Ref<const Vector> b, int frontalDimension,
+                        CliqueConditional& out);
 
   /// Δ_F = R⁻¹ (z − T Δ_S), into `frontalDelta` (resized).
   void solve(const Vector& separatorDelta, Vector& frontalDelta) const;

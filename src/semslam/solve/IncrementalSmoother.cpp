@@ -13,6 +13,13 @@ namespace semslam {
 
 namespace {
 
+/// `lists` resized to `count` empty lists, keeping the storage of those that existed.
+std::vector<std::vector<int>>& reuseLists(std::vector<std::vector<int>>& lists, int count) {
+  lists.resize(count);
+  for (int i = 0; i < count; ++i) lists[i].clear();
+  return lists;
+}
+
 const char* const kNotPositiveDefinite =
     "IncrementalSmoother: the information matrix is not positive definite: some variable is not constrained by "
     "the factors (a gauge freedom without a prior, or a landmark seen too few times)";
@@ -313,7 +320,7 @@ std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked
   }
 
   // Ordering of the part, with the variables of the new factors last.
-  std::vector<std::vector<int>> neighbours(m);
+  std::vector<std::vector<int>>& neighbours = reuseLists(scratch_.neighbours, m);
   const auto connect = [&](const std::vector<int>& variables) {
     for (std::size_t p = 1; p < variables.size(); ++p) {
       const int a = local(variables[p]);
@@ -330,7 +337,7 @@ std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked
 
   // Step 4a: symbolic elimination in rank space. structure[k] = the variables after k that the Cholesky column of
   // k touches (its separator), parent[k] = the first of them (the elimination tree).
-  std::vector<std::vector<int>> higher(m);
+  std::vector<std::vector<int>>& higher = reuseLists(scratch_.higher, m);
   for (int a = 0; a < m; ++a) {
     for (int b : neighbours[a]) {
       const int ra = rank[a];
@@ -342,8 +349,8 @@ std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked
       }
     }
   }
-  std::vector<std::vector<int>> structure(m);
-  std::vector<std::vector<int>> treeChildren(m);
+  std::vector<std::vector<int>>& structure = reuseLists(scratch_.structure, m);
+  std::vector<std::vector<int>>& treeChildren = reuseLists(scratch_.treeChildren, m);
   std::vector<int> parent(m, -1);
   std::vector<int> marker(m, -1);
   for (int k = 0; k < m; ++k) {
@@ -369,21 +376,35 @@ std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked
       treeChildren[s.front()].push_back(k);
     }
   }
-  // Cliques: fundamental supernodes. k joins its parent's clique when its column is its parent's plus the parent
-  // (|structure[k]| = |structure[p]| + 1) and the parent still heads that clique.
+  // Cliques: supernodes. k joins its parent's clique C when its column is its parent's plus the parent
+  // (fundamental: |structure[k]| = |structure[p]| + 1 with p heading C), or, relaxed amalgamation as in CHOLMOD,
+  // when C has fewer than relaxedCliqueFrontals frontals and k's row would hold at most relaxedCliqueZeros of
+  // explicit zeros (structure[k] ⊆ C's variables always holds: the rest of k's row in C is zero).
   std::vector<int> cliqueOf(m, -1);
-  std::vector<int> headOf;  // per new clique, its first frontal (rank)
-  std::vector<std::vector<int>> frontalRanks;
+  std::vector<int> headOf;       // per new clique, its first frontal (rank)
+  std::vector<int> cliqueSize;   // per new clique, frontals + separator
+  std::vector<std::vector<int>>& frontalRanks = reuseLists(scratch_.frontalRanks, m);  // per new clique
   for (int k = m - 1; k >= 0; --k) {
     const int p = parent[k];
-    if (p >= 0 && headOf[cliqueOf[p]] == p && structure[k].size() == structure[p].size() + 1) {
-      cliqueOf[k] = cliqueOf[p];
-      headOf[cliqueOf[k]] = k;
-      frontalRanks[cliqueOf[k]].push_back(k);
+    bool join = false;
+    if (p >= 0) {
+      const int c = cliqueOf[p];
+      const int zeros = cliqueSize[c] - static_cast<int>(structure[k].size());
+      join = (headOf[c] == p && zeros == 0) ||
+             (static_cast<int>(frontalRanks[c].size()) < params_.relaxedCliqueFrontals &&
+              zeros <= params_.relaxedCliqueZeros * cliqueSize[c]);
+    }
+    if (join) {
+      const int c = cliqueOf[p];
+      cliqueOf[k] = c;
+      headOf[c] = k;
+      ++cliqueSize[c];
+      frontalRanks[c].push_back(k);
     } else {
       cliqueOf[k] = static_cast<int>(headOf.size());
       headOf.push_back(k);
-      frontalRanks.push_back({k});
+      cliqueSize.push_back(1 + static_cast<int>(structure[k].size()));
+      frontalRanks[headOf.size() - 1].push_back(k);
     }
   }
   const int newCount = static_cast<int>(headOf.size());
@@ -391,15 +412,27 @@ std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked
   std::vector<int> cliqueIds(newCount);
   for (int i = 0; i < newCount; ++i) cliqueIds[i] = allocateClique();
   const auto globalOfRank = [&](int r) { return eliminated[order[r]]; };
+  std::vector<int> separator;
   for (int i = 0; i < newCount; ++i) {
     Clique& clique = cliques_[cliqueIds[i]];
     std::vector<int>& ranks = frontalRanks[i];
-    std::reverse(ranks.begin(), ranks.end());
+    std::sort(ranks.begin(), ranks.end());
     for (int r : ranks) {
       clique.frontals.push_back(globalOfRank(r));
       variables_[globalOfRank(r)].clique = cliqueIds[i];
     }
-    const std::vector<int>& separator = structure[ranks.back()];
+    // The separator: the union of the frontals' columns, less the frontals.
+    separator.clear();
+    for (int r : ranks) {
+      for (int j : structure[r]) {
+        if (cliqueOf[j] != i && marker[j] != -2 - r) {
+          marker[j] = -2 - r;
+          separator.push_back(j);
+        }
+      }
+    }
+    std::sort(separator.begin(), separator.end());
+    separator.erase(std::unique(separator.begin(), separator.end()), separator.end());
     for (int r : separator) clique.separator.push_back(globalOfRank(r));
     if (separator.empty()) {
       roots_.push_back(cliqueIds[i]);
@@ -421,7 +454,7 @@ std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked
 
   // Step 4b: numeric elimination, children before parents: by increasing last frontal (a child's last frontal
   // precedes its parent variable, which is a frontal of the parent clique).
-  std::vector<std::vector<int>> factorsOfClique(newCount);
+  std::vector<std::vector<int>>& factorsOfClique = reuseLists(scratch_.factorsOfClique, newCount);
   for (int slot : gathered) {
     int first = m;
     for (int v : slots_[slot].variables) first = std::min(first, rank[local(v)]);
@@ -445,8 +478,11 @@ std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked
       scalarOffset[v] = n;
       n += variables_[v].dimension;
     }
-    Matrix A = Matrix::Zero(n, n);
-    Vector b = Vector::Zero(n);
+    std::vector<double>& storage = scratch_.cliqueSystem;
+    if (storage.size() < static_cast<std::size_t>(n) * (n + 1)) storage.resize(static_cast<std::size_t>(n) * (n + 1));
+    std::fill(storage.begin(), storage.begin() + static_cast<std::ptrdiff_t>(n) * (n + 1), 0.0);
+    Eigen::Map<Matrix> A(storage.data(), n, n);
+    Eigen::Map<Vector> b(storage.data() + static_cast<std::ptrdiff_t>(n) * n, n);
     // Extend-add: each factor's information and each child's marginal, scattered scalar by scalar through the
     // positions of their variables in this clique.
     std::vector<int>& positions = scratch_.positions;

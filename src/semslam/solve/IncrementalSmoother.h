@@ -173,6 +173,8 @@ class IncrementalSmoother final : public Smoother {
     std::vector<int> scalarOffset;
     std::vector<int> slotStamp;
     std::vector<int> positions;
+    std::vector<double> cliqueSystem;  // the dense (A, b) of the clique being eliminated
+    std::vector<std::vector<int>> neighbours, higher, structure, treeChildren, frontalRanks, factorsOfClique;
     int stamp = 0;
     LinearizedFactor linearized;
     Vector frontalDelta;

@@ -9,6 +9,12 @@
 //   relinearizeSkip       check for relinearization every this many updates (1: every update);
 //   wildfireThreshold     partial state update: back-substitution descends into an unchanged subtree only if some
 //                         variable of its separator moved by more than this (iSAM2's α); 0 solves exactly;
+//   relaxedCliqueFrontals, relaxedCliqueZeros
+//                         relaxed supernode amalgamation (as CHOLMOD's nrelax/zrelax): a variable joins its parent's
+//                         clique while that clique has fewer than relaxedCliqueFrontals frontals and the variable's
+//                         row in it would be at most this fraction of explicit zeros; fewer, larger dense cliques
+//                         (1 and 0 keep fundamental supernodes only).
+//
 // The defaults are GTSAM's own ISAM2Params defaults (0.1, 10, 0.001); docs/incremental-smoother.md gives the
 // figures for these and for the stricter 0.01 / 1 setting the iSAM2 reference run used.
 //
@@ -23,6 +29,8 @@ struct IncrementalSmootherParams {
   int relinearizeSkip = 10;
   double wildfireThreshold = 0.001;
   double reorderFillGrowth = 2.0;
+  int relaxedCliqueFrontals = 4;
+  double relaxedCliqueZeros = 0.5;
 };
 
 }  // namespace semslam
