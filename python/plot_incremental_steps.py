@@ -50,6 +50,7 @@ def log_to_isam(log_path, isam_path):
         sys.exit("expected a 2D range-bearing log")
     sx, sy, st = header["sensor"].get("body_to_sensor", [0.0, 0.0, 0.0])
     lines = []
+    first_observations = []  # the first pose's, written after the first odometry record (iSAM's rule)
     for i, record in enumerate(records):
         if i > 0:
             odometry = record["odometry"]
@@ -67,8 +68,11 @@ def log_to_isam(log_path, isam_path):
             point = rotation @ np.array([px, py]) + np.array([sx, sy])
             covariance = rotation @ J @ np.asarray(detection["covariance"]) @ J.T @ rotation.T
             R = sqrt_information(covariance)
-            lines.append("LANDMARK %d %d %.17g %.17g %s" % (i, detection["truth"], point[0], point[1],
-                                                           " ".join("%.17g" % v for v in upper(R))))
+            line = "LANDMARK %d %d %.17g %.17g %s" % (i, detection["truth"], point[0], point[1],
+                                                     " ".join("%.17g" % v for v in upper(R)))
+            (first_observations if i == 0 else lines).append(line)
+        if i == 1:
+            lines.extend(first_observations)
     with open(isam_path, "w") as f:
         f.write("\n".join(lines) + "\n")
     return len(records)
