@@ -264,10 +264,14 @@ TEST_P(IncrementalReplay, IntermediateEstimatesAndTheFinalOptimumMatchBatch) {
     replay(steps, smoother, done, checkpoint);
     done = checkpoint;
     // The estimate part-way matches a batch Gauss-Newton solve of the graph so far (warm-started at the same
-    // estimate) to the relinearization threshold's order; converged, to the batch optimum itself.
+    // estimate): it is one exact Gauss-Newton step from a point within the relinearization threshold, so it lies
+    // within that threshold of the optimum (measured: 3e-3 on intel, 4e-2 on manhattan, in the tangent) and its
+    // chi2 barely above it (measured: at most 2e-3 relative); converged, it is the batch optimum itself.
     const FactorGraph graph = smoother.factors();
     const OptimizationResult batch = optimize(graph, smoother.estimate());
-    EXPECT_LT(maxDifference(smoother.estimate(), batch.values), 5e-2) << "step " << checkpoint;
+    EXPECT_LT(maxDifference(smoother.estimate(), batch.values), IncrementalSmootherParams().relinearizeThreshold)
+        << "step " << checkpoint;
+    EXPECT_LE(graph.chi2(smoother.estimate()), (1.0 + 5e-3) * batch.finalChi2 + 1e-9) << "step " << checkpoint;
     auto converged = smoother.fork();
     static_cast<IncrementalSmoother&>(*converged).convergeAll();
     EXPECT_NEAR(graph.chi2(converged->estimate()), batch.finalChi2, 1e-6 * batch.finalChi2 + 1e-9) << "step " << checkpoint;
@@ -289,4 +293,6 @@ TEST_P(IncrementalReplay, IntermediateEstimatesAndTheFinalOptimumMatchBatch) {
 
 INSTANTIATE_TEST_SUITE_P(Datasets, IncrementalReplay,
                          ::testing::Values(ReplayCase{"vertigo/ring/originalDataset/ring.g2o", GraphFormat::G2o},
-                                           ReplayCase{"vertigo/intel/originalDataset/intel.g2o", GraphFormat::G2o}));
+                                           ReplayCase{"vertigo/intel/originalDataset/intel.g2o", GraphFormat::G2o},
+                                           ReplayCase{"vertigo/manhattan/originalDataset/g2o/manhattanOlson3500.g2o",
+                                                      GraphFormat::G2o}));

@@ -2,8 +2,6 @@
 
 #include <camd.h>
 
-#include <algorithm>
-#include <numeric>
 #include <stdexcept>
 
 namespace semslam {
@@ -11,24 +9,43 @@ namespace semslam {
 std::vector<int> constrainedOrdering(const std::vector<std::vector<int>>& neighbours, const std::vector<bool>& last) {
   const int n = static_cast<int>(neighbours.size());
   if (n <= 1) return std::vector<int>(n, 0);
-  // Symmetric pattern, both triangles, sorted and without duplicates or diagonal (CAMD's valid input).
-  std::vector<std::vector<int>> columns(n);
+  // Symmetric pattern, both triangles, without duplicates or diagonal, built by counting; columns are left
+  // unsorted (CAMD sorts them itself, in linear time, when it finds them so).
+  std::vector<int> Ap(n + 1, 0);
   for (int i = 0; i < n; ++i) {
     for (int j : neighbours[i]) {
       if (j == i) continue;
-      columns[i].push_back(j);
-      columns[j].push_back(i);
+      ++Ap[i + 1];
+      ++Ap[j + 1];
     }
   }
-  std::vector<int> Ap(n + 1, 0);
-  std::vector<int> Ai;
+  for (int i = 0; i < n; ++i) Ap[i + 1] += Ap[i];
+  std::vector<int> Ai(Ap[n]);
+  std::vector<int> fill(Ap.begin(), Ap.end() - 1);
   for (int i = 0; i < n; ++i) {
-    auto& column = columns[i];
-    std::sort(column.begin(), column.end());
-    column.erase(std::unique(column.begin(), column.end()), column.end());
-    Ai.insert(Ai.end(), column.begin(), column.end());
-    Ap[i + 1] = static_cast<int>(Ai.size());
+    for (int j : neighbours[i]) {
+      if (j == i) continue;
+      Ai[fill[i]++] = j;
+      Ai[fill[j]++] = i;
+    }
   }
+  // Remove duplicates column by column, compacting in place.
+  std::vector<int> marker(n, -1);
+  int write = 0;
+  for (int i = 0; i < n; ++i) {
+    const int begin = Ap[i];
+    const int end = Ap[i + 1];
+    Ap[i] = write;
+    for (int p = begin; p < end; ++p) {
+      const int j = Ai[p];
+      if (marker[j] != i) {
+        marker[j] = i;
+        Ai[write++] = j;
+      }
+    }
+  }
+  Ap[n] = write;
+  Ai.resize(write);
   if (Ai.empty()) Ai.push_back(0);  // CAMD reads Ai[0] even for an empty pattern
   std::vector<int> constraint(n);
   bool anyLast = false;
