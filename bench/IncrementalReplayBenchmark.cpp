@@ -179,7 +179,7 @@ int main(int argc, char** argv) {
     const auto refFinalStart = Clock::now();
     if (ref.complete) strict.convergeAll();
     const double refFinal = since(refFinalStart);
-    ref.chi2 = problem->file.factors.chi2(strict.estimate());
+    if (ref.complete) ref.chi2 = problem->file.factors.chi2(strict.estimate());
 
     // Batch re-solving every step, within the budget.
     BatchSmoother rebatch;

@@ -30,9 +30,9 @@ bool CliqueConditional::eliminate(Eigen::Ref<Matrix> A, Eigen::Ref<const Vector>
   return true;
 }
 
-void CliqueConditional::solve(const Vector& separatorDelta, Vector& frontalDelta) const {
+void CliqueConditional::solve(Eigen::Ref<const Vector> separatorDelta, Eigen::Ref<Vector> frontalDelta) const {
   frontalDelta = z;
-  if (T.cols() > 0) frontalDelta.noalias() -= T * separatorDelta;
+  if (T.cols() > 0) frontalDelta.noalias() -= T.lazyProduct(separatorDelta);
   R.triangularView<Eigen::Upper>().solveInPlace(frontalDelta);
 }
 

@@ -37,8 +37,8 @@ struct CliqueConditional {
   static bool eliminate(Eigen::Ref<Matrix> A, Eigen::Ref<const Vector> b, int frontalDimension,
                         CliqueConditional& out);
 
-  /// Δ_F = R⁻¹ (z − T Δ_S), into `frontalDelta` (resized).
-  void solve(const Vector& separatorDelta, Vector& frontalDelta) const;
+  /// Δ_F = R⁻¹ (z − T Δ_S), into `frontalDelta` (of the frontal dimension).
+  void solve(Eigen::Ref<const Vector> separatorDelta, Eigen::Ref<Vector> frontalDelta) const;
 };
 
 }  // namespace semslam

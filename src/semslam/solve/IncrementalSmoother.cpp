@@ -523,24 +523,23 @@ void IncrementalSmoother::backSubstitute(const std::vector<int>& newCliques, dou
   for (int root : roots_) {
     if (isNew[root]) stack.push_back(root);
   }
-  Vector separatorDelta;
+  std::vector<double>& buffer = scratch_.solveBuffer;
   while (!stack.empty()) {
     const int id = stack.back();
     stack.pop_back();
     const Clique& clique = cliques_[id];
     ++lastUpdate_.solvedCliques;
-    int ns = 0;
-    for (int v : clique.separator) ns += variables_[v].dimension;
-    separatorDelta.resize(ns);
-    ns = 0;
+    const int nfTotal = static_cast<int>(clique.conditional->R.rows());
+    const int nsTotal = static_cast<int>(clique.conditional->T.cols());
+    if (buffer.size() < static_cast<std::size_t>(nfTotal + nsTotal)) buffer.resize(nfTotal + nsTotal);
+    double* gathered = buffer.data() + nfTotal;
     for (int v : clique.separator) {
       const Variable& variable = variables_[v];
-      separatorDelta.segment(ns, variable.dimension) = Eigen::Map<const Vector>(delta_.data() + variable.offset,
-                                                                                variable.dimension);
-      ns += variable.dimension;
+      std::copy(delta_.begin() + variable.offset, delta_.begin() + variable.offset + variable.dimension, gathered);
+      gathered += variable.dimension;
     }
-    Vector& frontalDelta = scratch_.frontalDelta;
-    clique.conditional->solve(separatorDelta, frontalDelta);
+    Eigen::Map<Vector> frontalDelta(buffer.data(), nfTotal);
+    clique.conditional->solve(Eigen::Map<const Vector>(buffer.data() + nfTotal, nsTotal), frontalDelta);
     int nf = 0;
     for (int v : clique.frontals) {
       const Variable& variable = variables_[v];

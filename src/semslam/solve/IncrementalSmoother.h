@@ -177,7 +177,7 @@ class IncrementalSmoother final : public Smoother {
     std::vector<std::vector<int>> neighbours, higher, structure, treeChildren, frontalRanks, factorsOfClique;
     int stamp = 0;
     LinearizedFactor linearized;
-    Vector frontalDelta;
+    std::vector<double> solveBuffer;  // one clique's frontal and separator Δ in back-substitution
   };
   Scratch scratch_;
 
