@@ -31,9 +31,22 @@ bool CliqueConditional::eliminate(Eigen::Ref<Matrix> A, Eigen::Ref<const Vector>
 }
 
 void CliqueConditional::solve(Eigen::Ref<const Vector> separatorDelta, Eigen::Ref<Vector> frontalDelta) const {
-  frontalDelta = z;
-  if (T.cols() > 0) frontalDelta.noalias() -= T.lazyProduct(separatorDelta);
-  R.triangularView<Eigen::Upper>().solveInPlace(frontalDelta);
+  // Column-oriented loops: cliques are small, and Eigen's blocked kernels cost more than they save at these sizes.
+  const Eigen::Index nf = R.rows();
+  const Eigen::Index ns = T.cols();
+  double* x = frontalDelta.data();
+  for (Eigen::Index i = 0; i < nf; ++i) x[i] = z[i];
+  for (Eigen::Index j = 0; j < ns; ++j) {
+    const double s = separatorDelta[j];
+    const double* column = T.data() + j * nf;
+    for (Eigen::Index i = 0; i < nf; ++i) x[i] -= column[i] * s;
+  }
+  for (Eigen::Index j = nf - 1; j >= 0; --j) {
+    const double* column = R.data() + j * nf;
+    x[j] /= column[j];
+    const double xj = x[j];
+    for (Eigen::Index i = 0; i < j; ++i) x[i] -= column[i] * xj;
+  }
 }
 
 }  // namespace semslam

@@ -557,8 +557,13 @@ void IncrementalSmoother::backSubstitute(const std::vector<int>& newCliques, dou
       }
       nf += variable.dimension;
     }
+    // A child's separator lies in this clique's variables: if none of them moved, only new children need solving.
+    bool anyMoved = false;
+    for (int v : clique.frontals) anyMoved = anyMoved || moved[v];
+    for (int v : clique.separator) anyMoved = anyMoved || moved[v];
     for (int child : clique.children) {
       bool visit = isNew[child] != 0;
+      if (!anyMoved && !visit) continue;
       for (std::size_t i = 0; !visit && i < cliques_[child].separator.size(); ++i) {
         visit = moved[cliques_[child].separator[i]] != 0;
       }
