@@ -1,6 +1,7 @@
 #include "semslam/solve/CliqueConditional.h"
 
 #include <Eigen/Cholesky>
+#include <new>
 
 namespace semslam {
 
@@ -15,7 +16,8 @@ bool CliqueConditional::eliminate(Eigen::Ref<Matrix> A, Eigen::Ref<const Vector>
   for (int i = 0; i < nf; ++i) {
     if (!(A(i, i) > 0.0)) return false;
   }
-  out.R.setZero(nf, nf);
+  out.allocate(nf, ns);
+  out.R.setZero();
   out.R.triangularView<Eigen::Upper>() = A.topLeftCorner(nf, nf).transpose();
   out.T = A.topRightCorner(nf, ns);
   L.solveInPlace(out.T);
@@ -28,6 +30,21 @@ bool CliqueConditional::eliminate(Eigen::Ref<Matrix> A, Eigen::Ref<const Vector>
   out.marginalVector = b.tail(ns);
   out.marginalVector.noalias() -= out.T.transpose() * out.z;
   return true;
+}
+
+void CliqueConditional::allocate(int nf, int ns) {
+  storage_.resize(static_cast<std::size_t>(nf) * nf + static_cast<std::size_t>(nf) * ns + nf +
+                  static_cast<std::size_t>(ns) * ns + ns);
+  double* p = storage_.data();
+  new (&R) Eigen::Map<Matrix>(p, nf, nf);  // re-seating a Map, as Eigen documents
+  p += static_cast<std::ptrdiff_t>(nf) * nf;
+  new (&T) Eigen::Map<Matrix>(p, nf, ns);
+  p += static_cast<std::ptrdiff_t>(nf) * ns;
+  new (&z) Eigen::Map<Vector>(p, nf);
+  p += nf;
+  new (&marginalInformation) Eigen::Map<Matrix>(p, ns, ns);
+  p += static_cast<std::ptrdiff_t>(ns) * ns;
+  new (&marginalVector) Eigen::Map<Vector>(p, ns);
 }
 
 void CliqueConditional::solve(Eigen::Ref<const Vector> separatorDelta, Eigen::Ref<Vector> frontalDelta) const {

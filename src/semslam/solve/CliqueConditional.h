@@ -20,16 +20,23 @@
 // Invariants: R is nf×nf upper triangular with a positive diagonal; T is nf×ns; z has nf rows; Ā is ns×ns
 // symmetric (both triangles stored); b̄ has ns rows. Immutable once built: forks of a smoother share it.
 
+#include <vector>
+
 #include "semslam/geometry/Matrix.h"
 
 namespace semslam {
 
 struct CliqueConditional {
-  Matrix R;
-  Matrix T;
-  Vector z;
-  Matrix marginalInformation;  // Ā
-  Vector marginalVector;       // b̄
+  CliqueConditional() = default;
+  CliqueConditional(const CliqueConditional&) = delete;  // the maps point into this object's own storage
+  CliqueConditional& operator=(const CliqueConditional&) = delete;
+
+  // Views of one contiguous allocation (one per clique instead of five: cliques are many and small).
+  Eigen::Map<Matrix> R{nullptr, 0, 0};
+  Eigen::Map<Matrix> T{nullptr, 0, 0};
+  Eigen::Map<Vector> z{nullptr, 0};
+  Eigen::Map<Matrix> marginalInformation{nullptr, 0, 0};  // Ā
+  Eigen::Map<Vector> marginalVector{nullptr, 0};          // b̄
 
   /// Eliminates the first `frontalDimension` scalar variables of the symmetric system (A, b) (both triangles of A
   /// filled). Returns false, leaving `out` unspecified, if A_FF is not numerically positive definite (a variable
@@ -39,6 +46,10 @@ struct CliqueConditional {
 
   /// Δ_F = R⁻¹ (z − T Δ_S), into `frontalDelta` (of the frontal dimension).
   void solve(Eigen::Ref<const Vector> separatorDelta, Eigen::Ref<Vector> frontalDelta) const;
+
+ private:
+  void allocate(int frontalDimension, int separatorDimension);
+  std::vector<double> storage_;
 };
 
 }  // namespace semslam

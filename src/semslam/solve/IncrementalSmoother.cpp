@@ -486,7 +486,8 @@ std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked
     // Extend-add: each factor's information and each child's marginal, scattered scalar by scalar through the
     // positions of their variables in this clique.
     std::vector<int>& positions = scratch_.positions;
-    const auto scatter = [&](const std::vector<int>& variables, const Matrix& information, const Vector& vector) {
+    const auto scatter = [&](const std::vector<int>& variables, Eigen::Ref<const Matrix> information,
+                             Eigen::Ref<const Vector> vector) {
       positions.clear();
       for (int v : variables) {
         for (int d = 0; d < variables_[v].dimension; ++d) positions.push_back(scalarOffset[v] + d);
@@ -494,7 +495,7 @@ std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked
       const int size = static_cast<int>(positions.size());
       for (int c = 0; c < size; ++c) {
         double* column = A.data() + static_cast<Eigen::Index>(positions[c]) * n;
-        const double* source = information.data() + static_cast<Eigen::Index>(c) * size;
+        const double* source = information.data() + static_cast<Eigen::Index>(c) * information.outerStride();
         for (int r = 0; r < size; ++r) column[positions[r]] += source[r];
         b[positions[c]] += vector[c];
       }
