@@ -22,23 +22,24 @@
 //      children of removed cliques that are not removed themselves are orphans, kept with their cached marginals;
 //   3. gathers the factors whose variables all lie in the removed part, re-linearizes those that are stale, and
 //      orders the removed part with CAMD, the variables of the new factors constrained last (ConstrainedOrdering.h);
-//   4. eliminates it symbolically (column structures, cliques = fundamental supernodes), then numerically, clique by
-//      clique bottom-up, adding each orphan's cached marginal to the clique of its first-ordered separator
-//      variable, which becomes its new parent;
+//   4. eliminates it symbolically (column structures; cliques = fundamental supernodes, plus relaxed amalgamation
+//      of small ones), then numerically, clique by clique bottom-up, adding each factor's cached information and
+//      each orphan's cached marginal to the clique of its first-ordered variable (which becomes the orphan's new
+//      parent);
 //   5. back-substitutes top-down (partial state update): re-eliminated cliques are always solved; an untouched
 //      clique only if some variable of its separator moved by more than wildfireThreshold.
 // Need-based reordering: when the factor's entries per variable grow past reorderFillGrowth times their value
 // after the last full ordering, an update re-orders and re-eliminates the whole tree (linearizations are reused).
 //
-// Exactness: with wildfireThreshold = 0 the update Δ solves the Gauss-Newton system at θ exactly (the tree is the
-// Cholesky factor of A under its ordering), so after convergeAll() the estimate is the batch Gauss-Newton
-// optimum. With relinearizeThreshold > 0 an intermediate estimate is the solution of the system linearized at θ,
-// within the relinearization threshold of the estimate: one Gauss-Newton step from a nearby point.
+// Exactness: with wildfireThreshold = 0 every update's Δ solves the Gauss-Newton system at θ exactly (the tree is
+// the Cholesky factor of A under its ordering); with the default, the cliques below separators that moved less
+// than the threshold keep their previous Δ. An intermediate estimate is thus one Gauss-Newton step from θ, which
+// lies within the relinearization threshold of it; convergeAll() iterates to the batch optimum.
 //
 // Marginals: jointMarginal(keys) is the covariance of the Gaussian at the linearization point θ (A⁻¹ restricted to
 // the keys), computed by two triangular solves per scalar column that touch only the cliques on the paths from
 // the keys to the root: cheap for recent variables, which iSAM2's ordering keeps near the root; never a dense
-// inverse. It equals Marginals(factors(), linearizationPoint()); after convergeAll(), θ is the estimate.
+// inverse. It equals Marginals(factors(), linearizationPoint()); after convergeAll(), θ is the optimum.
 //
 // replaceFactor(index, factor) takes effect at the next update (both the old and the new factor's variables are
 // marked then). Variables are never removed; a variable no factor touches is left out of the tree, at its value.
