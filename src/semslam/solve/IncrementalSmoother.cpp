@@ -8,6 +8,7 @@
 #include <unordered_set>
 
 #include "semslam/solve/ConstrainedOrdering.h"
+#include "semslam/solve/SymbolicElimination.h"
 
 namespace semslam {
 
@@ -335,109 +336,37 @@ std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked
   std::vector<int> rank(m);  // local index -> position in the elimination order
   for (int k = 0; k < m; ++k) rank[order[k]] = k;
 
-  // Step 4a: symbolic elimination in rank space. structure[k] = the variables after k that the Cholesky column of
-  // k touches (its separator), parent[k] = the first of them (the elimination tree).
-  std::vector<std::vector<int>>& higher = reuseLists(scratch_.higher, m);
+  // Step 4a: symbolic elimination in rank space (SymbolicElimination.h): columns, elimination tree, cliques.
+  std::vector<std::vector<int>>& later = reuseLists(scratch_.later, m);
   for (int a = 0; a < m; ++a) {
     for (int b : neighbours[a]) {
       const int ra = rank[a];
       const int rb = rank[b];
       if (ra < rb) {
-        higher[ra].push_back(rb);
+        later[ra].push_back(rb);
       } else if (rb < ra) {
-        higher[rb].push_back(ra);
+        later[rb].push_back(ra);
       }
     }
   }
-  std::vector<std::vector<int>>& structure = reuseLists(scratch_.structure, m);
-  std::vector<std::vector<int>>& treeChildren = reuseLists(scratch_.treeChildren, m);
-  std::vector<int> parent(m, -1);
-  std::vector<int> marker(m, -1);
-  for (int k = 0; k < m; ++k) {
-    std::vector<int>& s = structure[k];
-    marker[k] = k;
-    for (int j : higher[k]) {
-      if (marker[j] != k) {
-        marker[j] = k;
-        s.push_back(j);
-      }
-    }
-    for (int child : treeChildren[k]) {
-      for (int j : structure[child]) {
-        if (marker[j] != k) {
-          marker[j] = k;
-          s.push_back(j);
-        }
-      }
-    }
-    std::sort(s.begin(), s.end());
-    if (!s.empty()) {
-      parent[k] = s.front();
-      treeChildren[s.front()].push_back(k);
-    }
-  }
-  // Cliques: supernodes. k joins its parent's clique C when its column is its parent's plus the parent
-  // (fundamental: |structure[k]| = |structure[p]| + 1 with p heading C), or, relaxed amalgamation as in CHOLMOD,
-  // when C has fewer than relaxedCliqueFrontals frontals and k's row would hold at most relaxedCliqueZeros of
-  // explicit zeros (structure[k] ⊆ C's variables always holds: the rest of k's row in C is zero).
-  std::vector<int> cliqueOf(m, -1);
-  std::vector<int> headOf;       // per new clique, its first frontal (rank)
-  std::vector<int> cliqueSize;   // per new clique, frontals + separator
-  std::vector<std::vector<int>>& frontalRanks = reuseLists(scratch_.frontalRanks, m);  // per new clique
-  for (int k = m - 1; k >= 0; --k) {
-    const int p = parent[k];
-    bool join = false;
-    if (p >= 0) {
-      const int c = cliqueOf[p];
-      const int zeros = cliqueSize[c] - static_cast<int>(structure[k].size());
-      join = (headOf[c] == p && zeros == 0) ||
-             (static_cast<int>(frontalRanks[c].size()) < params_.relaxedCliqueFrontals &&
-              zeros <= params_.relaxedCliqueZeros * cliqueSize[c]);
-    }
-    if (join) {
-      const int c = cliqueOf[p];
-      cliqueOf[k] = c;
-      headOf[c] = k;
-      ++cliqueSize[c];
-      frontalRanks[c].push_back(k);
-    } else {
-      cliqueOf[k] = static_cast<int>(headOf.size());
-      headOf.push_back(k);
-      cliqueSize.push_back(1 + static_cast<int>(structure[k].size()));
-      frontalRanks[headOf.size() - 1].push_back(k);
-    }
-  }
-  const int newCount = static_cast<int>(headOf.size());
+  SymbolicElimination& symbolic = scratch_.symbolic;
+  symbolic.eliminate(later, params_.relaxedCliqueFrontals, params_.relaxedCliqueZeros);
+  const int newCount = symbolic.cliqueCount();
   lastUpdate_.reeliminatedCliques = newCount;
   std::vector<int> cliqueIds(newCount);
   for (int i = 0; i < newCount; ++i) cliqueIds[i] = allocateClique();
   const auto globalOfRank = [&](int r) { return eliminated[order[r]]; };
-  std::vector<int> separator;
   for (int i = 0; i < newCount; ++i) {
     Clique& clique = cliques_[cliqueIds[i]];
-    std::vector<int>& ranks = frontalRanks[i];
-    std::sort(ranks.begin(), ranks.end());
-    for (int r : ranks) {
+    for (int r : symbolic.frontals(i)) {
       clique.frontals.push_back(globalOfRank(r));
       variables_[globalOfRank(r)].clique = cliqueIds[i];
     }
-    // The separator: the union of the frontals' columns, less the frontals.
-    separator.clear();
-    for (int r : ranks) {
-      for (int j : structure[r]) {
-        if (cliqueOf[j] != i && marker[j] != -2 - r) {
-          marker[j] = -2 - r;
-          separator.push_back(j);
-        }
-      }
-    }
-    std::sort(separator.begin(), separator.end());
-    separator.erase(std::unique(separator.begin(), separator.end()), separator.end());
-    for (int r : separator) clique.separator.push_back(globalOfRank(r));
-    if (separator.empty()) {
+    for (int r : symbolic.separator(i)) clique.separator.push_back(globalOfRank(r));
+    if (symbolic.parent(i) < 0) {
       roots_.push_back(cliqueIds[i]);
     } else {
-      clique.parent = cliqueIds[cliqueOf[separator.front()]];
+      clique.parent = cliqueIds[symbolic.parent(i)];
     }
   }
   for (int i = 0; i < newCount; ++i) {
@@ -447,7 +376,7 @@ std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked
   for (int orphan : orphans) {
     int first = m;
     for (int v : cliques_[orphan].separator) first = std::min(first, rank[local(v)]);
-    const int id = cliqueIds[cliqueOf[first]];
+    const int id = cliqueIds[symbolic.cliqueOf(first)];
     cliques_[orphan].parent = id;
     cliques_[id].children.push_back(orphan);
   }
@@ -458,12 +387,12 @@ std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked
   for (int slot : gathered) {
     int first = m;
     for (int v : slots_[slot].variables) first = std::min(first, rank[local(v)]);
-    factorsOfClique[cliqueOf[first]].push_back(slot);
+    factorsOfClique[symbolic.cliqueOf(first)].push_back(slot);
   }
   std::vector<int> byLastFrontal(newCount);
   std::iota(byLastFrontal.begin(), byLastFrontal.end(), 0);
   std::sort(byLastFrontal.begin(), byLastFrontal.end(),
-            [&](int a, int b) { return frontalRanks[a].back() < frontalRanks[b].back(); });
+            [&](int a, int b) { return symbolic.frontals(a).back() < symbolic.frontals(b).back(); });
   std::vector<int>& scalarOffset = scratch_.scalarOffset;
   scalarOffset.resize(variables_.size());
   for (int i : byLastFrontal) {

@@ -59,6 +59,7 @@
 #include "semslam/solve/IncrementalSmootherParams.h"
 #include "semslam/solve/Optimizer.h"
 #include "semslam/solve/Smoother.h"
+#include "semslam/solve/SymbolicElimination.h"
 
 namespace semslam {
 
@@ -175,7 +176,8 @@ class IncrementalSmoother final : public Smoother {
     std::vector<int> slotStamp;
     std::vector<int> positions;
     std::vector<double> cliqueSystem;  // the dense (A, b) of the clique being eliminated
-    std::vector<std::vector<int>> neighbours, higher, structure, treeChildren, frontalRanks, factorsOfClique;
+    std::vector<std::vector<int>> neighbours, later, factorsOfClique;
+    SymbolicElimination symbolic;
     int stamp = 0;
     LinearizedFactor linearized;
     std::vector<double> solveBuffer;  // one clique's frontal and separator Δ in back-substitution
