@@ -196,6 +196,36 @@ TEST(IncrementalSmoother, ForksAreIndependentAndShareFactors) {
   EXPECT_LT(maxDifference(smoother.estimate(), fork->estimate()), 1e-12);
 }
 
+TEST(IncrementalSmoother, AForkSwitchingAFactorLeavesTheOriginalAndItsMarginalsUnchanged) {
+  // The hybrid belief's use: fork, switch a factor in the fork (a max-mixture component, an EM weight), update it;
+  // the original's estimate and marginals, computed from the conditionals both share, stay as they were.
+  const test::Problem problem = test::planarSlamProblem(10, 3, 6);
+  const Steps steps = splitByPose(problem, 10);
+  IncrementalSmoother smoother(exactParams());
+  for (int i = 0; i < 10; ++i) smoother.update(steps.factors[i], steps.values[i]);
+  const Values before = smoother.estimate();
+  const Matrix marginalBefore = smoother.jointMarginal({poseKey(9), poseKey(4)}).covariance();
+  std::unique_ptr<Smoother> fork = smoother.fork();
+  FactorIndex odometry = 0;
+  for (FactorIndex f = 0; f < fork->factors().size(); ++f) {
+    const auto& keys = fork->factors()[f]->keys();
+    if (keys.size() == 2 && keys[0] == poseKey(4) && keys[1] == poseKey(5)) odometry = f;
+  }
+  ASSERT_GT(odometry, 0u);
+  const auto& original = dynamic_cast<const BetweenFactor<SE2>&>(*fork->factors()[odometry]);
+  fork->replaceFactor(odometry, std::make_shared<const BetweenFactor<SE2>>(
+                                    poseKey(4), poseKey(5), original.measured(), NoiseModel::isotropic(3, 1.0)));
+  fork->update();
+  EXPECT_GT(maxDifference(fork->estimate(), before), 1e-6);
+  EXPECT_EQ(maxDifference(smoother.estimate(), before), 0.0);
+  EXPECT_EQ((smoother.jointMarginal({poseKey(9), poseKey(4)}).covariance() - marginalBefore).norm(), 0.0);
+  // The fork's marginals are those of its own graph.
+  const Marginals batch(fork->factors(), static_cast<IncrementalSmoother&>(*fork).linearizationPoint());
+  const Matrix expected = batch.jointMarginal({poseKey(9), poseKey(4)}).covariance();
+  EXPECT_LE((fork->jointMarginal({poseKey(9), poseKey(4)}).covariance() - expected).cwiseAbs().maxCoeff(),
+            1e-6 * expected.cwiseAbs().maxCoeff());
+}
+
 TEST(IncrementalSmoother, NeedBasedReorderingKeepsTheSolutionExact) {
   const test::Problem problem = test::planarSlamProblem(24, 6, 9);
   const Steps steps = splitByPose(problem, 24);
