@@ -123,8 +123,14 @@ int IncrementalSmoother::allocateClique() {
 }
 
 void IncrementalSmoother::freeClique(int id) {
-  factorEntries_ -= entries(cliques_[id]);
-  cliques_[id] = Clique();
+  Clique& clique = cliques_[id];
+  factorEntries_ -= entries(clique);
+  // Emptied, not destroyed: the next clique to take this id reuses the lists' storage.
+  clique.frontals.clear();
+  clique.separator.clear();
+  clique.children.clear();
+  clique.parent = -1;
+  clique.conditional.reset();
   freeCliques_.push_back(id);
 }
 
