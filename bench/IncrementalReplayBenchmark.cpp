@@ -200,9 +200,10 @@ int main(int argc, char** argv) {
       std::snprintf(refRatio, sizeof refRatio, "%.1f", (ref.total + refFinal) / gnWall);
       std::snprintf(refChi2, sizeof refChi2, "%.1e", std::abs(ref.chi2 - batchChi2) / batchChi2);
     }
-    std::printf("%-14s %5zu %1zu| %7.3f %7.3f %6.3f %7.4f %7.1e | %7.4f %7.4f | %6.1f %6.1f | %7s %7.4f %6s | %9s %8.4f | "
-                "%8.1e %8s %6.2f\n",
-                dataset.name.c_str(), replay.size(), rounds, inc.total, inc.cpu, finalWall, inc.worst, inc.checkpointGap,
+    std::printf("%-14s %5zu %1zu| %7.3f %7.3f %6.3f %7.4f %7.1e | %7.4f %7.4f | %6.1f %6.1f | %7s %7.4f %6s | "
+                "%9s %8.4f | %8.1e %8s %6.2f\n",
+                dataset.name.c_str(), replay.size(), rounds, inc.total, inc.cpu, finalWall, inc.worst,
+                inc.checkpointGap,
                 gnWall, gnCpu, (inc.total + finalWall) / gnWall, (inc.cpu + finalCpu) / gnCpu,
                 budgeted(ref).c_str(), ref.worst, refRatio, budgeted(re).c_str(), re.worst,
                 std::abs(inc.chi2 - batchChi2) / batchChi2, refChi2, forkMs);

@@ -304,7 +304,8 @@ TEST_P(IncrementalReplay, IntermediateEstimatesAndTheFinalOptimumMatchBatch) {
     EXPECT_LE(graph.chi2(smoother.estimate()), (1.0 + 5e-3) * batch.finalChi2 + 1e-9) << "step " << checkpoint;
     auto converged = smoother.fork();
     static_cast<IncrementalSmoother&>(*converged).convergeAll();
-    EXPECT_NEAR(graph.chi2(converged->estimate()), batch.finalChi2, 1e-6 * batch.finalChi2 + 1e-9) << "step " << checkpoint;
+    EXPECT_NEAR(graph.chi2(converged->estimate()), batch.finalChi2, 1e-6 * batch.finalChi2 + 1e-9)
+        << "step " << checkpoint;
     EXPECT_LT(maxDifference(converged->estimate(), batch.values), 1e-5) << "step " << checkpoint;
     // Marginals of the newest poses equal the batch ones at the same linearization point.
     const Key newest = steps.step(checkpoint - 1, smoother.estimate()).pose;
