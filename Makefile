@@ -4,7 +4,8 @@
 #   make build    configure and build (Release) into build/
 #   make test     build, then run every test through ctest
 #   make demo     build, then run the main job on its built-in default
-#   make bench    build and run the benchmarks (installs libceres-dev for the Ceres comparison)
+#   make bench    build and run the benchmarks (installs libceres-dev for the Ceres comparison), then the
+#                 incremental replay benchmark
 #   make results  regenerate the measured results in docs/results.md
 
 BUILD_DIR ?= build
@@ -54,6 +55,7 @@ bench: deps-bench
 	cmake -S . -B $(BUILD_DIR)-bench -DCMAKE_BUILD_TYPE=Release -DSEMSLAM_BUILD_TESTS=OFF -DSEMSLAM_BUILD_BENCH=ON
 	cmake --build $(BUILD_DIR)-bench -j $(JOBS)
 	$(BUILD_DIR)-bench/bin/semslam_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+	$(BUILD_DIR)-bench/bin/semslam_incremental_bench
 
 results: build
 	$(PYTHON) python/make_results.py --build $(BUILD_DIR)

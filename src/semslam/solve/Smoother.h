@@ -12,7 +12,9 @@
 //   fork()                                    a cheap copy that shares every factor with the original (factors are
 //                                             immutable), for the branching hypotheses of the hybrid belief.
 //
-// Implementations: BatchSmoother (re-solves the whole graph each update); an incremental one later.
+// Implementations: BatchSmoother (re-solves the whole graph each update) and IncrementalSmoother (a Bayes tree,
+// iSAM2-style: re-eliminates only what an update affects; its marginals are at its linearization point, within
+// the relinearization threshold of the estimate: docs/incremental-smoother.md).
 // Smoothers are not thread-safe; forks are independent and may be used from different threads.
 
 #include <memory>
