@@ -19,6 +19,7 @@
 #include "semslam/io/InputError.h"
 #include "semslam/io/MeasurementLogFile.h"
 #include "semslam/slam/SemanticSlamRun.h"
+#include "semslam/solve/SmootherFactory.h"
 
 namespace semslam::cli {
 namespace {
@@ -37,6 +38,7 @@ struct HybridArguments {
 
 struct RunArguments {
   std::string method = "mm-nh";
+  std::string smoother;  // empty: the method's default (incremental for paper B, batch LM for the hybrid belief)
   std::string in;
   std::string out;
   SemanticSlamOptions slam;
@@ -59,6 +61,9 @@ HybridOptions hybridOptions(const RunArguments& arguments) {
   h.maxComponents = o.maxComponents;
   h.visibility = !o.noVisibility;
   h.seed = o.seed;
+  if (!arguments.smoother.empty() && parseSmootherKind(arguments.smoother) == SmootherKind::Incremental) {
+    h.smootherFactory = smootherFactory(SmootherKind::Incremental);
+  }
   return h;
 }
 
@@ -77,6 +82,7 @@ void runSemanticSlamMethod(const RunArguments& arguments, const MeasurementLog& 
   SemanticSlamRunOptions options;
   options.slam = arguments.slam;
   options.slam.strategy = parseStrategy(arguments.method);
+  if (!arguments.smoother.empty()) options.slam.smoother = smootherFactory(parseSmootherKind(arguments.smoother));
   options.poseCovariances = !arguments.noCovariances;
   SemanticSlamRun result;
   try {
@@ -154,6 +160,9 @@ void addRunCommand(CLI::App& app) {
       ->required()
       ->check(CLI::ExistingFile);
   command->add_option("--out", arguments->out, "output folder")->required();
+  command->add_option("--smoother", arguments->smoother,
+                      "back end: incremental or batch (default: incremental for known..mm-nh, batch for hybrid)")
+      ->check(CLI::IsMember({"incremental", "batch"}));
   addSemanticSlamOptions(command, *arguments);
   addHybridOptions(command, arguments->hybrid);
   command->callback([arguments]() {

@@ -25,6 +25,7 @@
 #include "semslam/io/MeasurementLogFile.h"
 #include "semslam/study/ProgressBar.h"
 #include "semslam/study/RobustnessStudy.h"
+#include "semslam/solve/SmootherFactory.h"
 
 namespace semslam::cli {
 
@@ -41,6 +42,7 @@ struct RobustnessArguments {
   int threads = 2;
   int maxSteps = 0;
   double gate = AssociationGate::kDefaultConfidence;
+  std::string smoother = "incremental";
   double modelFloor = 0.0;
   bool quiet = false;
   bool progress = false;
@@ -99,6 +101,7 @@ void runRobustness(const RobustnessArguments& arguments) {
   options.threads = arguments.threads;
   options.maxSteps = arguments.maxSteps;
   options.slam.gateConfidence = arguments.gate;
+  options.slam.smoother = smootherFactory(parseSmootherKind(arguments.smoother));
   options.modelMisclassificationFloor = arguments.modelFloor;
   try {
     validateRobustnessOptions(options);
@@ -149,6 +152,7 @@ void runRobustness(const RobustnessArguments& arguments) {
       {"base_seed", options.baseSeed},
       {"max_steps", options.maxSteps},
       {"gate", options.slam.gateConfidence},
+      {"smoother", arguments.smoother},
       {"model_misclassification_floor", options.modelMisclassificationFloor},
       {"stuck_ratio", options.stuckRatio},
       {"stuck_margin_m", options.stuckMargin},
@@ -186,6 +190,9 @@ void addStudyRobustnessCommand(CLI::App& study) {
   command->add_option("--threads", a->threads, "worker threads")->check(CLI::Range(1, 256))->capture_default_str();
   command->add_option("--max-steps", a->maxSteps, "use only the log's first N steps (0: all)")
       ->check(CLI::Range(0, 1000000000))
+      ->capture_default_str();
+  command->add_option("--smoother", a->smoother, "back end: incremental or batch")
+      ->check(CLI::IsMember({"incremental", "batch"}))
       ->capture_default_str();
   command->add_option("--gate", a->gate, "chi-square gate confidence (paper B: 0.9)")
       ->check(CLI::Range(1e-9, 1.0 - 1e-12))

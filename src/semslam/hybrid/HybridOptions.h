@@ -27,14 +27,13 @@
 #include <functional>
 #include <memory>
 
-#include "semslam/solve/Smoother.h"
+#include "semslam/solve/SmootherFactory.h"
 
 namespace semslam {
 
 enum class WeightMethod { Sampled, Analytic };
 enum class Branching { WholeAssociation, OneDetectionAtATime };
 
-using SmootherFactory = std::function<std::unique_ptr<Smoother>()>;
 
 /// BatchSmoother with Levenberg-Marquardt (robust to the far-off linearisation points of a broad initial prior).
 SmootherFactory defaultSmootherFactory();

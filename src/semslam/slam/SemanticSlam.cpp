@@ -8,7 +8,6 @@
 
 #include "semslam/association/MarginalLikelihood.h"
 #include "semslam/factors/MaxMixtureFactor.h"
-#include "semslam/solve/BatchSmoother.h"
 
 namespace semslam {
 namespace {
@@ -59,7 +58,7 @@ SemanticSlam::SemanticSlam(const LogHeader& header, SemanticSlamOptions options)
       options_(std::move(options)),
       factory_(header),
       gate_(options_.gateConfidence),
-      smoother_(options_.smoother ? options_.smoother() : std::make_unique<BatchSmoother>()) {
+      smoother_(options_.smoother ? options_.smoother() : smootherFactory(SmootherKind::Incremental)()) {
   if (!(options_.nullWeight > 0.0 && options_.nullWeight < 1.0)) {
     throw std::invalid_argument("null-hypothesis weight must be in (0, 1)");
   }
@@ -311,6 +310,7 @@ void SemanticSlam::expectationMaximization(std::size_t firstRecord, int iteratio
 
 void SemanticSlam::finish() {
   if (options_.strategy == AssociationStrategy::Gpda) expectationMaximization(0, 10);
+  smoother_->converge();
 }
 
 std::pair<std::optional<int>, double> SemanticSlam::chosenAssociation(const DetectionRecord& record) const {

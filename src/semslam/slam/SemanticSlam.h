@@ -38,11 +38,9 @@
 #include "semslam/eval/RunEvaluation.h"
 #include "semslam/io/RunFolder.h"
 #include "semslam/slam/AssociationStrategy.h"
-#include "semslam/solve/Smoother.h"
+#include "semslam/solve/SmootherFactory.h"
 
 namespace semslam {
-
-using SmootherFactory = std::function<std::unique_ptr<Smoother>()>;
 
 struct SemanticSlamOptions {
   AssociationStrategy strategy = AssociationStrategy::MaxMixtureNullHypothesis;
@@ -54,7 +52,7 @@ struct SemanticSlamOptions {
   double minimumGpdaWeight = 1e-4;///< gpda: weights are clamped below at this
   bool warmStart = true;          ///< mm, mm-nh: solve each step first with every detection's most likely
                                   ///< candidate, then switch to the mixtures (docs/max-mixtures.md)
-  SmootherFactory smoother;       ///< the back end; empty: BatchSmoother with Gauss-Newton
+  SmootherFactory smoother;       ///< the back end; empty: the IncrementalSmoother
 };
 
 /// What became of one detection.

@@ -91,6 +91,7 @@ class IncrementalSmoother final : public Smoother {
   /// linearization point is the optimum and the estimate is one (vanishing) Gauss-Newton step from it. Returns
   /// the batch optimizer's result.
   OptimizationResult convergeAll(const OptimizerParams& params = {});
+  void converge() override { convergeAll(); }
 
   /// θ: the point every factor is linearized at.
   const Values& linearizationPoint() const { return theta_; }

@@ -54,6 +54,10 @@ class Smoother {
   /// The factors in force, in index order (removed ones left out).
   virtual FactorGraph factors() const = 0;
 
+  /// Iterates to the optimum of the factors in force. A batch smoother is there after every update (no-op); an
+  /// incremental one keeps an estimate one Gauss-Newton step from its linearization point, which this refines.
+  virtual void converge() {}
+
   /// A copy that shares all factors with this one; updating either leaves the other unchanged.
   virtual std::unique_ptr<Smoother> fork() const = 0;
 };
