@@ -50,7 +50,7 @@ HybridOptions hybridOptions(const RunArguments& arguments) {
   const HybridArguments& o = arguments.hybrid;
   HybridOptions h;
   h.useSemantics = arguments.method == "hybrid";
-  h.weights = o.weights == "analytic" ? WeightMethod::Analytic : WeightMethod::Sampled;
+  h.weights = parseWeightMethod(o.weights);
   h.samples = o.samples;
   h.pruneRatio = o.pruneRatio;
   h.gateRatio = o.gateRatio;
@@ -121,8 +121,8 @@ void addHybridOptions(CLI::App* command, HybridArguments& hybrid) {
   command->add_option("--samples", hybrid.samples, "hybrid: samples per weight (A, eq. 16)")
       ->check(CLI::Range(2, 100000000))
       ->capture_default_str();
-  command->add_option("--weights", hybrid.weights, "hybrid: sampled (A, eq. 16) or analytic (linearised)")
-      ->check(CLI::IsMember({"sampled", "analytic"}))
+  command->add_option("--weights", hybrid.weights, "hybrid: sampled (A, eq. 16-17, plain Monte Carlo), importance (linearised-posterior proposal) or analytic (linearised)")
+      ->check(CLI::IsMember({"sampled", "importance", "analytic"}))
       ->capture_default_str();
   command->add_option("--prune-ratio", hybrid.pruneRatio, "hybrid: prune w < w_max / ratio (<= 1: no pruning)")
       ->capture_default_str();

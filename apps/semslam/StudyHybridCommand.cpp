@@ -48,7 +48,7 @@ void runStudy(const StudyHybridOptions& o) {
   options.seed = o.seed;
   options.threads = o.threads;
   options.hybrid.samples = o.samples;
-  options.hybrid.weights = o.weights == "analytic" ? WeightMethod::Analytic : WeightMethod::Sampled;
+  options.hybrid.weights = parseWeightMethod(o.weights);
   options.hybrid.pruneRatio = o.pruneRatio;
   options.hybrid.gateRatio = o.gateRatio;
   options.hybrid.maxComponents = o.maxComponents;
@@ -78,8 +78,8 @@ void addStudyHybridCommand(CLI::App& study) {
       ->capture_default_str();
   hybrid->add_option("--seed", o->seed, "seed of tracks and draws")->capture_default_str();
   hybrid->add_option("--samples", o->samples, "samples per weight")->check(CLI::Range(2, 100000000))->capture_default_str();
-  hybrid->add_option("--weights", o->weights, "sampled or analytic")
-      ->check(CLI::IsMember({"sampled", "analytic"}))
+  hybrid->add_option("--weights", o->weights, "sampled (A, eq. 17), importance or analytic")
+      ->check(CLI::IsMember({"sampled", "importance", "analytic"}))
       ->capture_default_str();
   hybrid->add_option("--prune-ratio", o->pruneRatio, "prune w < w_max / ratio")->capture_default_str();
   hybrid->add_option("--gate-ratio", o->gateRatio, "gate before sampling at w_max / ratio")->capture_default_str();
