@@ -27,6 +27,7 @@ struct HybridArguments {
   std::uint64_t seed = 1;
   int samples = 1000;
   std::string weights = "sampled";
+  int importanceIterations = 1;
   double pruneRatio = 150.0;
   double gateRatio = 1e5;
   std::string branching = "whole";
@@ -52,6 +53,7 @@ HybridOptions hybridOptions(const RunArguments& arguments) {
   h.useSemantics = arguments.method == "hybrid";
   h.weights = parseWeightMethod(o.weights);
   h.samples = o.samples;
+  h.importanceIterations = o.importanceIterations;
   h.pruneRatio = o.pruneRatio;
   h.gateRatio = o.gateRatio;
   h.branching = o.branching == "one-at-a-time" ? Branching::OneDetectionAtATime : Branching::WholeAssociation;
@@ -123,6 +125,10 @@ void addHybridOptions(CLI::App* command, HybridArguments& hybrid) {
       ->capture_default_str();
   command->add_option("--weights", hybrid.weights, "hybrid: sampled (A, eq. 16-17, plain Monte Carlo), importance (linearised-posterior proposal) or analytic (linearised)")
       ->check(CLI::IsMember({"sampled", "importance", "analytic"}))
+      ->capture_default_str();
+  command->add_option("--importance-iterations", hybrid.importanceIterations,
+                      "hybrid: importance weights' proposal linearisations (1: at the mean; > 1: iterated)")
+      ->check(CLI::Range(1, 100))
       ->capture_default_str();
   command->add_option("--prune-ratio", hybrid.pruneRatio, "hybrid: prune w < w_max / ratio (<= 1: no pruning)")
       ->capture_default_str();

@@ -35,6 +35,7 @@ const char* weightMethodName(WeightMethod method) {
 
 void HybridOptions::validate() const {
   if (samples < 2) throw std::invalid_argument("hybrid: at least 2 samples are needed");
+  if (importanceIterations < 1) throw std::invalid_argument("hybrid: importance iterations must be >= 1");
   if (!std::isfinite(pruneRatio) || !std::isfinite(gateRatio)) throw std::invalid_argument("hybrid: ratios must be finite");
   if (!(jointCompatibility > 0.0 && jointCompatibility < 1.0)) {
     throw std::invalid_argument("hybrid: joint-compatibility confidence must be in (0, 1)");

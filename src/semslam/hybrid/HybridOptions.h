@@ -11,6 +11,8 @@
 //                       given the candidate's detections (association/ImportanceSampledLikelihood.h), times the
 //                       visibility model; Analytic: the linearised marginal likelihood
 //                       (association/MarginalLikelihood.h, the weight of paper B), without visibility.
+//   importanceIterations  linearisations of the importance proposal's update: 1 at the mean (the linearised
+//                       update), > 1 iterated (ImportanceSampledLikelihood.h).
 //   pruneRatio          prune components with w < w_max / pruneRatio (A sec. V: 150); ≤ 1 disables pruning.
 //   gateRatio           before sampling, skip candidates whose linearised weight is below w_max,lin / gateRatio
 //                       (the weight they could carry is reported as the gate's lost mass); ≤ 1 disables the gate.
@@ -51,6 +53,7 @@ struct HybridOptions {
   bool useSemantics = true;
   WeightMethod weights = WeightMethod::Sampled;
   int samples = 1000;
+  int importanceIterations = 1;
   double pruneRatio = 150.0;
   double gateRatio = 1e5;
   Branching branching = Branching::WholeAssociation;
@@ -61,7 +64,7 @@ struct HybridOptions {
   std::uint64_t seed = 1;
   SmootherFactory smootherFactory;  // empty: defaultSmootherFactory()
 
-  /// Throws std::invalid_argument for samples < 2, non-finite ratios, jointCompatibility outside (0, 1) or
+  /// Throws std::invalid_argument for samples < 2, importanceIterations < 1, non-finite ratios, jointCompatibility outside (0, 1) or
   /// maxComponents < 0.
   void validate() const;
 };

@@ -269,7 +269,7 @@ std::vector<AssociationCandidate> propagateWeights(const HybridProblem& problem,
       const SampledLikelihood likelihood =
           options.weights == WeightMethod::Importance
               ? importanceSampledLikelihood(c.factors, parent.smoother->estimate(), marginal, options.samples, rng,
-                                            visibility)
+                                            visibility, ImportanceProposal{options.importanceIterations})
               : sampledLikelihood(c.factors, parent.smoother->estimate(), marginal, options.samples, rng, visibility);
       c.logWeight = std::log(parent.component->weight) + likelihood.logLikelihood + c.logConstant;
       c.relativeStandardError = likelihood.relativeStandardError;
