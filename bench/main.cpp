@@ -1,13 +1,16 @@
-// semslam_bench: our solvers and Ceres on the standard pose graphs, then the ratio table (RatioTable.h).
+// semslam_bench: our solvers and Ceres on the standard pose graphs, then the ratio table (RatioTable.h); one step
+// of the hybrid belief with each weight method (HybridStepBenchmark.h).
 //
 //   semslam_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true   (what `make bench` runs)
 //   semslam_bench --benchmark_filter=manhattan                                       (one dataset)
+//   semslam_bench --benchmark_filter=HybridStep                                      (the hybrid step)
 
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
 
 #include "Datasets.h"
+#include "HybridStepBenchmark.h"
 #include "RatioTable.h"
 #include "SemslamSolverBenchmarks.h"
 #ifdef SEMSLAM_BENCH_HAVE_CERES
@@ -24,6 +27,7 @@ int main(int argc, char** argv) {
     semslam::bench::registerCeresSolverBenchmarks(dataset);
 #endif
   }
+  semslam::bench::registerHybridStepBenchmarks();
 #ifndef SEMSLAM_BENCH_HAVE_CERES
   std::printf("semslam_bench was built without Ceres (find_package(Ceres) failed): our solvers only\n");
 #endif

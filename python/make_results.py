@@ -145,23 +145,32 @@ def hybrid_section(semslam, data, scratch, python):
     import plot_hybrid
     lines = ["## Hybrid belief, paper A (issue 4)", "",
              "docs/hybrid-belief.md explains the method and every decision. Study: 50 tracks of 10 steps on the "
-             "default aliased2d layout, the same tracks with and without the classifier model (paired), 1000 "
+             "default aliased2d layout (and a four-bay layout, data/scenarios/aliased2d_four_bays.json), the same tracks with and without the classifier model (paired), 1000 "
              "samples per weight, pruning at w_max/150, gate at 1e5; differences are classifier − geometric at the "
              "final step with 95 % t intervals over tracks; the slope is the per-track least-squares slope of the "
              "entropy against alpha.", ""]
+    four_bays = os.path.join("data", "scenarios", "aliased2d_four_bays.json")
     studies = []
-    for weights in ("sampled", "analytic"):
-        out = os.path.join(scratch, "hybrid-" + weights)
-        command = [semslam, "study", "hybrid", "--tracks", "50", "--steps", "10", "--alpha", "0.25", "--weights",
-                   weights, "--out", out]
-        studies.append((weights, shown(command, data).replace(out, "DIR"), out, run(command).strip().replace(out, "DIR")))
-    sweep = os.path.join(scratch, "hybrid-sweep")
-    sweep_command = [semslam, "study", "hybrid", "--tracks", "50", "--steps", "10", "--out", sweep]
-    sweep_output = run(sweep_command).strip()
-    for weights, command, out, output in studies:
+    for layout, weights in (("default", "sampled"), ("default", "importance"), ("default", "analytic"),
+                            ("four bays", "sampled"), ("four bays", "importance")):
+        out = os.path.join(scratch, "hybrid-" + weights + ("-four-bays" if layout == "four bays" else ""))
+        command = [semslam, "study", "hybrid"] + (["--scenario", four_bays] if layout == "four bays" else []) + [
+            "--tracks", "50", "--steps", "10", "--alpha", "0.25", "--weights", weights, "--out", out]
+        studies.append((layout, weights, shown(command, data).replace(out, "DIR"), out,
+                        run(command).strip().replace(out, "DIR")))
+    sweeps = {}
+    for weights in ("sampled", "importance"):
+        sweep = os.path.join(scratch, "hybrid-sweep-" + weights)
+        sweep_command = [semslam, "study", "hybrid", "--tracks", "50", "--steps", "10", "--weights", weights,
+                         "--out", sweep]
+        sweeps[weights] = (sweep, sweep_command, run(sweep_command).strip())
+    for layout, weights, command, out, output in studies:
         a = plot_hybrid.analyze(out, 0.25)
-        s = plot_hybrid.analyze(sweep, 0.25) if weights == "sampled" else None
-        lines += [f"### alpha = 0.25, {weights} weights", "", "```sh", command, "```", "", "```", output, "```", "",
+        sweep, sweep_command, sweep_output = sweeps.get(weights, (None, None, None)) if layout == "default" else (
+            None, None, None)
+        s = plot_hybrid.analyze(sweep, 0.25) if sweep else None
+        title = f"alpha = 0.25, {weights} weights" + (", four-bay layout" if layout == "four bays" else "")
+        lines += [f"### {title}", "", "```sh", command, "```", "", "```", output, "```", "",
                   "| metric | classifier | geometric | paired difference | 95 % CI | excludes 0 |", "|---|---|---|---|---|---|"]
         for metric, _ in plot_hybrid.METRICS:
             p = a["paired"][metric]
@@ -190,7 +199,7 @@ def hybrid_section(semslam, data, scratch, python):
         lines.append("")
     figures = os.path.join("docs", "figures")
     os.makedirs(figures, exist_ok=True)
-    run([python, os.path.join("python", "plot_hybrid.py"), "fig5", sweep, "--out",
+    run([python, os.path.join("python", "plot_hybrid.py"), "fig5", sweeps["sampled"][0], "--out",
          os.path.join(figures, "hybrid_fig5.png")])
     track = os.path.join(scratch, "track.jsonl")
     run([semslam, "simulate", "aliased2d", "--steps", "10", "--seed", "3", "--out", track])
@@ -217,7 +226,7 @@ def hybrid_section(semslam, data, scratch, python):
               "| method | weights | ATE rmse [m] | DA accuracy | NEES (heaviest) | entropy | components max/mean | time [s] |",
               "|---|---|---|---|---|---|---|---|"]
     for method in ("hybrid", "hybrid-geometric"):
-        for weights in ("sampled", "analytic"):
+        for weights in ("sampled", "importance", "analytic"):
             out = os.path.join(scratch, f"litw-{method}-{weights}")
             command = [semslam, "run", "--method", method, "--weights", weights, "--branching", "one-at-a-time",
                        "--max-components", "20", "--in", log, "--out", out]

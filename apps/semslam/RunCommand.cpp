@@ -28,6 +28,7 @@ struct HybridArguments {
   std::uint64_t seed = 1;
   int samples = 1000;
   std::string weights = "sampled";
+  int importanceIterations = 1;
   double pruneRatio = 150.0;
   double gateRatio = 1e5;
   std::string branching = "whole";
@@ -52,8 +53,9 @@ HybridOptions hybridOptions(const RunArguments& arguments) {
   const HybridArguments& o = arguments.hybrid;
   HybridOptions h;
   h.useSemantics = arguments.method == "hybrid";
-  h.weights = o.weights == "analytic" ? WeightMethod::Analytic : WeightMethod::Sampled;
+  h.weights = parseWeightMethod(o.weights);
   h.samples = o.samples;
+  h.importanceIterations = o.importanceIterations;
   h.pruneRatio = o.pruneRatio;
   h.gateRatio = o.gateRatio;
   h.branching = o.branching == "one-at-a-time" ? Branching::OneDetectionAtATime : Branching::WholeAssociation;
@@ -127,8 +129,12 @@ void addHybridOptions(CLI::App* command, HybridArguments& hybrid) {
   command->add_option("--samples", hybrid.samples, "hybrid: samples per weight (A, eq. 16)")
       ->check(CLI::Range(2, 100000000))
       ->capture_default_str();
-  command->add_option("--weights", hybrid.weights, "hybrid: sampled (A, eq. 16) or analytic (linearised)")
-      ->check(CLI::IsMember({"sampled", "analytic"}))
+  command->add_option("--weights", hybrid.weights, "hybrid: sampled (A, eq. 16-17, plain Monte Carlo), importance (linearised-posterior proposal) or analytic (linearised)")
+      ->check(CLI::IsMember({"sampled", "importance", "analytic"}))
+      ->capture_default_str();
+  command->add_option("--importance-iterations", hybrid.importanceIterations,
+                      "hybrid: importance weights' proposal linearisations (1: at the mean; > 1: iterated)")
+      ->check(CLI::Range(1, 100))
       ->capture_default_str();
   command->add_option("--prune-ratio", hybrid.pruneRatio, "hybrid: prune w < w_max / ratio (<= 1: no pruning)")
       ->capture_default_str();

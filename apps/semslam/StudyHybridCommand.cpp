@@ -24,6 +24,7 @@ struct StudyHybridOptions {
   std::uint64_t seed = 1;
   int samples = 1000;
   std::string weights = "sampled";
+  int importanceIterations = 1;
   double pruneRatio = 150.0;
   double gateRatio = 1e5;
   int maxComponents = 0;
@@ -48,7 +49,8 @@ void runStudy(const StudyHybridOptions& o) {
   options.seed = o.seed;
   options.threads = o.threads;
   options.hybrid.samples = o.samples;
-  options.hybrid.weights = o.weights == "analytic" ? WeightMethod::Analytic : WeightMethod::Sampled;
+  options.hybrid.weights = parseWeightMethod(o.weights);
+  options.hybrid.importanceIterations = o.importanceIterations;
   options.hybrid.pruneRatio = o.pruneRatio;
   options.hybrid.gateRatio = o.gateRatio;
   options.hybrid.maxComponents = o.maxComponents;
@@ -78,8 +80,12 @@ void addStudyHybridCommand(CLI::App& study) {
       ->capture_default_str();
   hybrid->add_option("--seed", o->seed, "seed of tracks and draws")->capture_default_str();
   hybrid->add_option("--samples", o->samples, "samples per weight")->check(CLI::Range(2, 100000000))->capture_default_str();
-  hybrid->add_option("--weights", o->weights, "sampled or analytic")
-      ->check(CLI::IsMember({"sampled", "analytic"}))
+  hybrid->add_option("--weights", o->weights, "sampled (A, eq. 17), importance or analytic")
+      ->check(CLI::IsMember({"sampled", "importance", "analytic"}))
+      ->capture_default_str();
+  hybrid->add_option("--importance-iterations", o->importanceIterations,
+                     "importance weights: linearisations of the proposal (1: at the mean; > 1: iterated update)")
+      ->check(CLI::Range(1, 100))
       ->capture_default_str();
   hybrid->add_option("--prune-ratio", o->pruneRatio, "prune w < w_max / ratio")->capture_default_str();
   hybrid->add_option("--gate-ratio", o->gateRatio, "gate before sampling at w_max / ratio")->capture_default_str();

@@ -68,6 +68,23 @@ TEST(HybridBelief, AnalyticWeightsEqualTheClosedFormOnALinearGaussianToy) {
   for (int j = 0; j < 3; ++j) EXPECT_NEAR(weightOf(belief, j), expected[j], 1e-9) << "object " << j;
 }
 
+TEST(HybridBelief, ImportanceWeightsEqualTheClosedFormOnALinearGaussianToy) {
+  // The linearised-posterior proposal is the exact posterior of a linear-Gaussian model: every importance weight
+  // is p(z), so even 5 samples give the closed form (up to the toy's tiny pose-rotation nonlinearity: weights
+  // vary by ~3e-7).
+  const MeasurementLog log = linearToyLog({Point2(2.0, 0.5), Point2(2.5, -0.3), Point2(1.0, 2.0)}, {Vector2(2.2, 0.1)});
+  const HybridProblem problem(log.header, false);
+  HybridBelief belief(problem, unpruned(WeightMethod::Importance, 5));
+  const HybridStepReport report = belief.update(log.steps[0]);
+  const std::vector<double> expected = closedFormWeights(log);
+  ASSERT_EQ(belief.components().size(), 3u);
+  for (int j = 0; j < 3; ++j) EXPECT_NEAR(weightOf(belief, j), expected[j], 1e-6) << "object " << j;
+  EXPECT_LT(report.weights.maxRelativeStandardError, 1e-5);
+  EXPECT_EQ(parseWeightMethod("importance"), WeightMethod::Importance);
+  EXPECT_STREQ(weightMethodName(WeightMethod::Importance), "importance");
+  EXPECT_THROW(parseWeightMethod("magic"), std::invalid_argument);
+}
+
 TEST(HybridBelief, SampledWeightsMatchTheClosedFormWithinTheirMonteCarloError) {
   // A likelihood broad against the prior keeps the Monte Carlo variance moderate.
   const MeasurementLog log = linearToyLog({Point2(2.0, 0.5), Point2(2.5, -0.3), Point2(1.0, 1.5)}, {Vector2(2.2, 0.1)},

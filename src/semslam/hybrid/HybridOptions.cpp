@@ -17,8 +17,25 @@ SmootherFactory defaultSmootherFactory() {
   };
 }
 
+WeightMethod parseWeightMethod(const std::string& name) {
+  if (name == "sampled") return WeightMethod::Sampled;
+  if (name == "importance") return WeightMethod::Importance;
+  if (name == "analytic") return WeightMethod::Analytic;
+  throw std::invalid_argument("hybrid: unknown weight method '" + name + "' (sampled, importance or analytic)");
+}
+
+const char* weightMethodName(WeightMethod method) {
+  switch (method) {
+    case WeightMethod::Sampled: return "sampled";
+    case WeightMethod::Importance: return "importance";
+    case WeightMethod::Analytic: return "analytic";
+  }
+  return "sampled";
+}
+
 void HybridOptions::validate() const {
   if (samples < 2) throw std::invalid_argument("hybrid: at least 2 samples are needed");
+  if (importanceIterations < 1) throw std::invalid_argument("hybrid: importance iterations must be >= 1");
   if (!std::isfinite(pruneRatio) || !std::isfinite(gateRatio)) throw std::invalid_argument("hybrid: ratios must be finite");
   if (!(jointCompatibility > 0.0 && jointCompatibility < 1.0)) {
     throw std::invalid_argument("hybrid: joint-compatibility confidence must be in (0, 1)");

@@ -6,8 +6,13 @@
 //                       class realizations are not enumerated; true: semantic factors (eq. 10, 18) or categorical
 //                       likelihoods enter weights and beliefs, and each component carries a class realization.
 //   weights             Sampled: eq. 16-17 by Monte Carlo over the joint marginal of x_k and the associated objects
-//                       with `samples` draws, times the visibility model; Analytic: the linearised marginal
-//                       likelihood (association/MarginalLikelihood.h, the weight of paper B), without visibility.
+//                       with `samples` draws, times the visibility model; Importance: the same integral by
+//                       importance sampling with `samples` draws from the linearised posterior of the joint variables
+//                       given the candidate's detections (association/ImportanceSampledLikelihood.h), times the
+//                       visibility model; Analytic: the linearised marginal likelihood
+//                       (association/MarginalLikelihood.h, the weight of paper B), without visibility.
+//   importanceIterations  linearisations of the importance proposal's update: 1 at the mean (the linearised
+//                       update), > 1 iterated (ImportanceSampledLikelihood.h).
 //   pruneRatio          prune components with w < w_max / pruneRatio (A sec. V: 150); ≤ 1 disables pruning.
 //   gateRatio           before sampling, skip candidates whose linearised weight is below w_max,lin / gateRatio
 //                       (the weight they could carry is reported as the gate's lost mass); ≤ 1 disables the gate.
@@ -26,12 +31,17 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <string>
 
 #include "semslam/solve/SmootherFactory.h"
 
 namespace semslam {
 
-enum class WeightMethod { Sampled, Analytic };
+enum class WeightMethod { Sampled, Analytic, Importance };  // values fixed: Analytic stays 1
+
+/// "sampled", "importance", "analytic" ↔ WeightMethod; parseWeightMethod throws std::invalid_argument otherwise.
+WeightMethod parseWeightMethod(const std::string& name);
+const char* weightMethodName(WeightMethod method);
 enum class Branching { WholeAssociation, OneDetectionAtATime };
 
 
@@ -42,6 +52,7 @@ struct HybridOptions {
   bool useSemantics = true;
   WeightMethod weights = WeightMethod::Sampled;
   int samples = 1000;
+  int importanceIterations = 1;
   double pruneRatio = 150.0;
   double gateRatio = 1e5;
   Branching branching = Branching::WholeAssociation;
@@ -52,7 +63,7 @@ struct HybridOptions {
   std::uint64_t seed = 1;
   SmootherFactory smootherFactory;  // empty: defaultSmootherFactory()
 
-  /// Throws std::invalid_argument for samples < 2, non-finite ratios, jointCompatibility outside (0, 1) or
+  /// Throws std::invalid_argument for samples < 2, importanceIterations < 1, non-finite ratios, jointCompatibility outside (0, 1) or
   /// maxComponents < 0.
   void validate() const;
 };

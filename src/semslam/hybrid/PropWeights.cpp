@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "semslam/association/AssociationGate.h"
+#include "semslam/association/ImportanceSampledLikelihood.h"
 #include "semslam/association/MarginalLikelihood.h"
 #include "semslam/hybrid/Pruning.h"
 
@@ -266,7 +267,10 @@ std::vector<AssociationCandidate> propagateWeights(const HybridProblem& problem,
         };
       }
       const SampledLikelihood likelihood =
-          sampledLikelihood(c.factors, parent.smoother->estimate(), marginal, options.samples, rng, visibility);
+          options.weights == WeightMethod::Importance
+              ? importanceSampledLikelihood(c.factors, parent.smoother->estimate(), marginal, options.samples, rng,
+                                            visibility, ImportanceProposal{options.importanceIterations})
+              : sampledLikelihood(c.factors, parent.smoother->estimate(), marginal, options.samples, rng, visibility);
       c.logWeight = std::log(parent.component->weight) + likelihood.logLikelihood + c.logConstant;
       c.relativeStandardError = likelihood.relativeStandardError;
       ++report.sampled;
@@ -280,7 +284,7 @@ std::vector<AssociationCandidate> propagateWeights(const HybridProblem& problem,
   }
 
   // Agreement of the sampled weights with the linearised ones, over the candidates that were sampled.
-  if (options.weights == WeightMethod::Sampled && report.sampled > 0 && !report.fellBackToLinearized) {
+  if (options.weights != WeightMethod::Analytic && report.sampled > 0 && !report.fellBackToLinearized) {
     std::vector<double> sampled, linear;
     for (const AssociationCandidate& c : candidates) {
       if (c.gated) continue;

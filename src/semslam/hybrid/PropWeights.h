@@ -19,7 +19,11 @@
 //   gate         ℓ_gate: the same over the Cartesian geometric factors only (semantics can only sharpen it, and
 //                their linearisation in θ is poor under a broad prior);
 //   sampled      ℓ     = log w_parent + log (1/n_s) Σ_s P(Z | X_s) P(β | X_s) + log-constants     (eq. 16)
-//                with P(β | X_s) the visibility indicator (VisibilityModel2::associationFeasible) when enabled;
+//                with P(β | X_s) the visibility indicator (VisibilityModel2::associationFeasible) when enabled,
+//                X_s drawn from the joint marginal (eq. 17);
+//   importance   ℓ     = log w_parent + log (1/n_s) Σ_s P(Z | X_s) P(β | X_s) N(X_s; X̄, Σ) / q(X_s) + log-constants
+//                with X_s drawn from q, the linearised posterior of the joint variables given F
+//                (ImportanceSampledLikelihood.h): the same integral with far fewer wasted samples under broad priors;
 //   log-constants: Σ_i log P(z_sem,i | c) for the categorical model, and log(1/M) per newly associated object
 //                  (the class prior, eq. 3).
 // Gate: before sampling, a candidate whose ℓ_gate < max ℓ_gate − log(gateRatio) is skipped (weight 0); the
