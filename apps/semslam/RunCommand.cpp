@@ -19,6 +19,7 @@
 #include "semslam/io/InputError.h"
 #include "semslam/io/MeasurementLogFile.h"
 #include "semslam/slam/SemanticSlamRun.h"
+#include "semslam/study/ProgressBar.h"
 #include "semslam/solve/SmootherFactory.h"
 
 namespace semslam::cli {
@@ -70,10 +71,9 @@ HybridOptions hybridOptions(const RunArguments& arguments) {
 }
 
 void runHybridMethod(const RunArguments& arguments, const MeasurementLog& log) {
-  const HybridRunOutput output = runHybrid(log, hybridOptions(arguments), [](int done, int total) {
-    std::fprintf(stderr, "\rstep %d/%d", done, total);
-    if (done == total) std::fprintf(stderr, "\n");
-  });
+  ProgressBar progress("run " + arguments.method, static_cast<int>(log.steps.size()), ProgressBar::Mode::Always);
+  const HybridRunOutput output =
+      runHybrid(log, hybridOptions(arguments), [&progress](int done, int) { progress.update(done); });
   const RunMetrics metrics = writeHybridRunFolder(arguments.out, log, output);
   std::printf("%s on %s: %zu steps, %lld components at the end, entropy %.4g, err_wmax %.4g m, time %.3f s\n",
               metrics.method.c_str(), arguments.in.c_str(), log.steps.size(), metrics.components.value_or(0),

@@ -1,7 +1,6 @@
 // semslam study hybrid: paper A's statistical study (sec. V, Fig. 5) on aliased2d, with and without the classifier
 // model, over tracks and alphas (src/semslam/hybrid/HybridStudy.h).
 
-#include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
@@ -12,6 +11,7 @@
 #include "semslam/hybrid/HybridStudy.h"
 #include "semslam/io/InputError.h"
 #include "semslam/sim/ScenarioFile.h"
+#include "semslam/study/ProgressBar.h"
 
 namespace semslam::cli {
 namespace {
@@ -32,14 +32,6 @@ struct StudyHybridOptions {
   std::string out;
 };
 
-void progressBar(int done, int total) {
-  const int width = 40;
-  const int filled = total > 0 ? done * width / total : width;
-  std::fprintf(stderr, "\r[%s%s] %d/%d runs", std::string(filled, '#').c_str(),
-               std::string(width - filled, '.').c_str(), done, total);
-  if (done == total || !isatty(STDERR_FILENO)) std::fprintf(stderr, "\n");
-}
-
 void runStudy(const StudyHybridOptions& o) {
   HybridStudyOptions options;
   if (!o.scenario.empty()) options.scenario = readAliased2dScenario(o.scenario);
@@ -58,7 +50,9 @@ void runStudy(const StudyHybridOptions& o) {
     if (!(a >= 0.0 && a <= 1.0)) throw InputError("--alpha: every alpha must be in [0, 1]");
   }
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<HybridStudyRow> rows = runHybridStudy(options, progressBar);
+  ProgressBar progress("study hybrid", o.tracks * static_cast<int>(o.alphas.size()) * 2, ProgressBar::Mode::Always);
+  const std::vector<HybridStudyRow> rows =
+      runHybridStudy(options, [&progress](int done, int) { progress.update(done); });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   writeHybridStudy(o.out, rows);
   std::printf("hybrid study: %zu runs (%d tracks x %zu alphas x 2 models, %d steps) in %.1f s on %d threads\n",

@@ -43,6 +43,7 @@ struct RobustnessArguments {
   int maxSteps = 0;
   double gate = AssociationGate::kDefaultConfidence;
   std::string smoother = "incremental";
+  bool warmStart = true;
   double modelFloor = 0.0;
   bool quiet = false;
   bool progress = false;
@@ -102,6 +103,7 @@ void runRobustness(const RobustnessArguments& arguments) {
   options.maxSteps = arguments.maxSteps;
   options.slam.gateConfidence = arguments.gate;
   options.slam.smoother = smootherFactory(parseSmootherKind(arguments.smoother));
+  options.slam.warmStart = arguments.warmStart;
   options.modelMisclassificationFloor = arguments.modelFloor;
   try {
     validateRobustnessOptions(options);
@@ -153,6 +155,7 @@ void runRobustness(const RobustnessArguments& arguments) {
       {"max_steps", options.maxSteps},
       {"gate", options.slam.gateConfidence},
       {"smoother", arguments.smoother},
+      {"warm_start", arguments.warmStart},
       {"model_misclassification_floor", options.modelMisclassificationFloor},
       {"stuck_ratio", options.stuckRatio},
       {"stuck_margin_m", options.stuckMargin},
@@ -194,6 +197,8 @@ void addStudyRobustnessCommand(CLI::App& study) {
   command->add_option("--smoother", a->smoother, "back end: incremental or batch")
       ->check(CLI::IsMember({"incremental", "batch"}))
       ->capture_default_str();
+  command->add_flag("--no-warm-start{false}", a->warmStart,
+                    "mm, mm-nh: choose mixture components at the odometry prediction (docs/max-mixtures.md)");
   command->add_option("--gate", a->gate, "chi-square gate confidence (paper B: 0.9)")
       ->check(CLI::Range(1e-9, 1.0 - 1e-12))
       ->capture_default_str();

@@ -14,50 +14,12 @@
 #include "semslam/factors/PriorFactor.h"
 #include "semslam/factors/RangeBearingFactor.h"
 #include "semslam/graph/NoiseModel.h"
+#include "association/LinearToy.h"
 
 using namespace semslam;
+using semslam::test::LinearToy;
 
 namespace {
-
-double logGaussian(const Vector& x, const Vector& mean, const Matrix& covariance) {
-  const Eigen::LLT<Matrix> llt(covariance);
-  const Vector whitened = llt.matrixL().solve(x - mean);
-  const double logDet = 2.0 * llt.matrixLLT().diagonal().array().log().sum();
-  return -0.5 * whitened.squaredNorm() - 0.5 * logDet - 0.5 * x.size() * std::log(2.0 * std::numbers::pi);
-}
-
-/// Two correlated points, each measured directly (linear): p(z) = N([za; zb]; [ā; b̄], Σ + blockdiag(Ra, Rb)).
-struct LinearToy {
-  Key a = landmarkKey(0), b = landmarkKey(1);
-  Values values;
-  Matrix covariance = Matrix(4, 4);
-  Vector2 za = Vector2(1.3, -0.4), zb = Vector2(2.2, 0.9);
-  Matrix Ra = Vector2(0.3, 0.2).asDiagonal(), Rb = (Matrix(2, 2) << 0.5, 0.1, 0.1, 0.4).finished();
-  std::vector<FactorPtr> factors;
-  JointMarginal marginal;
-
-  LinearToy() {
-    values.insert(a, Point2(1.0, -0.5));
-    values.insert(b, Point2(2.0, 1.2));
-    covariance << 0.20, 0.05, 0.08, 0.00,  //
-        0.05, 0.30, 0.02, 0.06,            //
-        0.08, 0.02, 0.25, -0.04,           //
-        0.00, 0.06, -0.04, 0.15;
-    factors = {std::make_shared<const PriorFactor<Point2>>(a, za, NoiseModel::fromCovariance(Ra)),
-               std::make_shared<const PriorFactor<Point2>>(b, zb, NoiseModel::fromCovariance(Rb))};
-    marginal = JointMarginal({a, b}, {2, 2}, covariance);
-  }
-
-  double closedForm() const {
-    Vector z(4), mean(4);
-    z << za, zb;
-    mean << values.at<Point2>(a), values.at<Point2>(b);
-    Matrix S = covariance;
-    S.topLeftCorner(2, 2) += Ra;
-    S.bottomRightCorner(2, 2) += Rb;
-    return logGaussian(z, mean, S);
-  }
-};
 
 /// A range-bearing detection of a landmark from a robot whose position prior is broad (σ = 10 m, as the
 /// aliased2d default's initial prior), the robot truly 4 m from its prior mean.
@@ -147,10 +109,7 @@ TEST(ImportanceSampledLikelihood, IteratedProposalIsExactOnALinearProblemToo) {
 
 TEST(ImportanceSampledLikelihood, SampleWeightMultipliesTheIntegrandAndSameSeedSameResult) {
   LinearToy toy;
-  toy.za = toy.values.at<Point2>(toy.a);
-  toy.zb = toy.values.at<Point2>(toy.b);
-  toy.factors = {std::make_shared<const PriorFactor<Point2>>(toy.a, toy.za, NoiseModel::fromCovariance(toy.Ra)),
-                 std::make_shared<const PriorFactor<Point2>>(toy.b, toy.zb, NoiseModel::fromCovariance(toy.Rb))};
+  toy.measure(toy.values.at<Point2>(toy.a), toy.values.at<Point2>(toy.b));
   const double meanX = toy.za.x();
   const SampleWeight half = [&](const Values& s) { return s.at<Point2>(toy.a).x() > meanX ? 1.0 : 0.0; };
   std::mt19937 rng(3), again(3);

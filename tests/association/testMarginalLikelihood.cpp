@@ -11,51 +11,13 @@
 #include "semslam/factors/PriorFactor.h"
 #include "semslam/factors/RangeBearingFactor.h"
 #include "semslam/graph/NoiseModel.h"
+#include "association/LinearToy.h"
 
 using namespace semslam;
+using semslam::test::LinearToy;
+using semslam::test::logGaussian;
 
 namespace {
-
-double logGaussian(const Vector& x, const Vector& mean, const Matrix& covariance) {
-  const Eigen::LLT<Matrix> llt(covariance);
-  const Vector whitened = llt.matrixL().solve(x - mean);
-  const double logDet = 2.0 * llt.matrixLLT().diagonal().array().log().sum();
-  return -0.5 * whitened.squaredNorm() - 0.5 * logDet - 0.5 * x.size() * std::log(2.0 * std::numbers::pi);
-}
-
-/// Two point variables with correlated Gaussian beliefs, each measured directly (linear, h = identity).
-struct LinearToy {
-  Key a = landmarkKey(0), b = landmarkKey(1);
-  Values values;
-  Matrix covariance = Matrix(4, 4);
-  Vector2 za = Vector2(1.3, -0.4), zb = Vector2(2.2, 0.9);
-  Matrix Ra = Vector2(0.3, 0.2).asDiagonal(), Rb = (Matrix(2, 2) << 0.5, 0.1, 0.1, 0.4).finished();
-  std::vector<FactorPtr> factors;
-  JointMarginal marginal;
-
-  LinearToy() {
-    values.insert(a, Point2(1.0, -0.5));
-    values.insert(b, Point2(2.0, 1.2));
-    covariance << 0.20, 0.05, 0.08, 0.00,  //
-        0.05, 0.30, 0.02, 0.06,            //
-        0.08, 0.02, 0.25, -0.04,           //
-        0.00, 0.06, -0.04, 0.15;
-    factors = {std::make_shared<const PriorFactor<Point2>>(a, za, NoiseModel::fromCovariance(Ra)),
-               std::make_shared<const PriorFactor<Point2>>(b, zb, NoiseModel::fromCovariance(Rb))};
-    marginal = JointMarginal({a, b}, {2, 2}, covariance);
-  }
-
-  /// The closed form: [za; zb] ~ N([ā; b̄], Σ + blockdiag(Ra, Rb)).
-  double closedForm() const {
-    Vector z(4), mean(4);
-    z << za, zb;
-    mean << values.at<Point2>(a), values.at<Point2>(b);
-    Matrix S = covariance;
-    S.topLeftCorner(2, 2) += Ra;
-    S.bottomRightCorner(2, 2) += Rb;
-    return logGaussian(z, mean, S);
-  }
-};
 
 }  // namespace
 
@@ -104,8 +66,8 @@ TEST(SampledLikelihood, MatchesTheClosedFormWithinItsMonteCarloError) {
 }
 
 TEST(SampledLikelihood, ErrorsAreCalibratedOverManySeeds) {
-  // Over 200 seeds with 200 samples each, |error| / standard error must behave like |N(0, 1)|: at most ~5 % above
-  // 1.96 (allowing for binomial noise: ≤ 12 of 200).
+  // Over 200 seeds with 200 samples each, |error| / standard error must behave like |N(0, 1)|: about 5 % above
+  // 1.96, i.e. 10 of 200; at most 20 allows for binomial noise (P(X > 20) < 0.002 for X ~ Bin(200, 0.05)).
   const LinearToy toy;
   const double truth = toy.closedForm();
   int outside = 0;
@@ -122,10 +84,7 @@ TEST(SampledLikelihood, SampleWeightMultipliesTheIntegrand) {
   // w(X) = 1 on half the space (a > its mean along x): with a symmetric integrand about the mean, the weighted
   // likelihood of a measurement at the mean is half the unweighted one.
   LinearToy toy;
-  toy.za = toy.values.at<Point2>(toy.a);
-  toy.zb = toy.values.at<Point2>(toy.b);
-  toy.factors = {std::make_shared<const PriorFactor<Point2>>(toy.a, toy.za, NoiseModel::fromCovariance(toy.Ra)),
-                 std::make_shared<const PriorFactor<Point2>>(toy.b, toy.zb, NoiseModel::fromCovariance(toy.Rb))};
+  toy.measure(toy.values.at<Point2>(toy.a), toy.values.at<Point2>(toy.b));
   const double meanX = toy.za.x();
   std::mt19937 rng(3);
   const SampledLikelihood half = sampledLikelihood(toy.factors, toy.values, toy.marginal, 40000, rng,

@@ -9,17 +9,12 @@
 #include "semslam/hybrid/HybridMarginals.h"
 #include "semslam/hybrid/HybridRun.h"
 #include "semslam/solve/BatchSmoother.h"
+#include "support/GaussianDensity.h"
 
 using namespace semslam;
 using namespace semslam::test;
 
 namespace {
-
-/// log N(z; μ, S) in 2D.
-double logGaussian(const Vector2& z, const Vector2& mean, const Matrix2& covariance) {
-  const Vector2 d = z - mean;
-  return -0.5 * d.dot(covariance.inverse() * d) - 0.5 * std::log((2 * M_PI) * (2 * M_PI) * covariance.determinant());
-}
 
 /// Closed-form weights of associating detection z with each object of the linear toy (θ = 0 exactly known):
 /// z = l − t + v, so p(z | β = j) = N(z; l̄_j − t̄, Σ_t + Σ_l + R).

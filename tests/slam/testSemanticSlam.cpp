@@ -10,8 +10,10 @@
 #include "semslam/sim/GeneratedPath.h"
 #include "semslam/sim/SemanticSimulator.h"
 #include "semslam/slam/SemanticSlamRun.h"
+#include "support/GaussianDensity.h"
 
 using namespace semslam;
+using semslam::test::logGaussian;
 
 namespace {
 
@@ -36,13 +38,6 @@ SemanticSlamRun run(const MeasurementLog& log, AssociationStrategy strategy, dou
   options.slam.gateConfidence = gate;
   options.runFolder = false;
   return runSemanticSlam(log, options);
-}
-
-double normalLogDensity(const Vector& x, const Vector& mean, const Matrix& covariance) {
-  const Eigen::LLT<Matrix> llt(covariance);
-  const Vector w = llt.matrixL().solve(x - mean);
-  return -0.5 * w.squaredNorm() - llt.matrixLLT().diagonal().array().log().sum() -
-         0.5 * x.size() * std::log(2.0 * std::numbers::pi);
 }
 
 }  // namespace
@@ -120,7 +115,7 @@ TEST(SemanticSlam, FrontEndWeightsAreTheClosedFormMarginalLikelihoodTimesTheClas
     const Vector2 predicted = R.transpose() * (map[j] - robot.translation());
     const Matrix2 S = (0.25 + 0.01 + 0.09 + 0.04) * Matrix2::Identity();
     const double semantic = 0.5 * 0.2 + 0.5 * 0.8;  // uniform class belief: Σ_c P(1 | c) / 2
-    expected.push_back(std::exp(normalLogDensity(detection.geometry, predicted, S)) * semantic);
+    expected.push_back(std::exp(logGaussian(detection.geometry, predicted, S)) * semantic);
     sum += expected.back();
   }
   for (int j = 0; j < 3; ++j) EXPECT_NEAR(record.weights[j], expected[j] / sum, 1e-6) << "landmark " << j;

@@ -94,7 +94,7 @@ void linearize(AssociationCandidate& candidate, const PropagatedParent& parent, 
     candidate.innovationChi2 = 0.0;
     return;
   }
-  const JointMarginal marginal = subMarginal(parent.joint, integralKeys(pose, candidate.beta));
+  const JointMarginal marginal = parent.joint.restrictedTo(integralKeys(pose, candidate.beta));
   const Values& estimate = parent.smoother->estimate();
   const LinearizedLikelihood gate = linearizedLikelihood(candidate.gateFactors, estimate, marginal);
   candidate.gateLogWeight = base + gate.logLikelihood;
@@ -191,26 +191,6 @@ std::vector<AssociationCandidate> oneDetectionAtATime(const HybridProblem& probl
 
 }  // namespace
 
-JointMarginal subMarginal(const JointMarginal& joint, const std::vector<Key>& keys) {
-  std::vector<int> dimensions;
-  int total = 0;
-  for (Key key : keys) {
-    dimensions.push_back(static_cast<int>(joint.block(key, key).rows()));
-    total += dimensions.back();
-  }
-  Matrix covariance(total, total);
-  int row = 0;
-  for (std::size_t a = 0; a < keys.size(); ++a) {
-    int column = 0;
-    for (std::size_t b = 0; b < keys.size(); ++b) {
-      covariance.block(row, column, dimensions[a], dimensions[b]) = joint.block(keys[a], keys[b]);
-      column += dimensions[b];
-    }
-    row += dimensions[a];
-  }
-  return JointMarginal(keys, dimensions, covariance);
-}
-
 std::vector<AssociationCandidate> propagateWeights(const HybridProblem& problem, const HybridOptions& options,
                                                    const std::vector<PropagatedParent>& parents, int k,
                                                    const std::vector<Detection>& detections, std::mt19937& rng,
@@ -251,7 +231,7 @@ std::vector<AssociationCandidate> propagateWeights(const HybridProblem& problem,
     } else {
       const PropagatedParent& parent = parents[c.parent];
       const std::vector<Key> keys = integralKeys(pose, c.beta);
-      const JointMarginal marginal = subMarginal(parent.joint, keys);
+      const JointMarginal marginal = parent.joint.restrictedTo(keys);
       SampleWeight visibility;
       if (options.visibility) {
         visibility = [&problem, &keys](const Values& sample) {

@@ -85,7 +85,4 @@ std::vector<AssociationCandidate> propagateWeights(const HybridProblem& problem,
                                                    const std::vector<Detection>& detections, std::mt19937& rng,
                                                    PropWeightsReport& report);
 
-/// The joint marginal of `keys` (a subset of `joint`'s keys) from `joint`.
-JointMarginal subMarginal(const JointMarginal& joint, const std::vector<Key>& keys);
-
 }  // namespace semslam

@@ -69,7 +69,8 @@ SemanticSlam::SemanticSlam(const LogHeader& header, SemanticSlamOptions options)
 int SemanticSlam::addLandmark(const Value& value, std::optional<int> truthId, Values& values) {
   const int index = landmarks();
   const Key key = landmarkKey(static_cast<std::uint64_t>(index));
-  landmarks_.push_back({key, truthId, ClassBelief(header_.classes)});
+  landmarks_.push_back({key, ClassBelief(header_.classes)});
+  if (truthId) landmarkOfTruthId_.emplace(*truthId, index);
   values.insert(key, value);
   return index;
 }
@@ -107,8 +108,6 @@ void SemanticSlam::addStep(const TimeStep& step) {
     propagation.add(factory_.odometryFactor(previous, pose, *step.odometry));
   }
   poseKeys_.push_back(pose);
-  times_.push_back(step.time);
-  truePoses_.push_back(step.truePose);
   firstRecordOfStep_.push_back(records_.size());
   const bool known = options_.strategy == AssociationStrategy::Known;
   if (!step.detections.empty() && !known && !landmarks_.empty()) {
@@ -129,7 +128,9 @@ void SemanticSlam::addStep(const TimeStep& step) {
   FactorGraph associations = propagation;
   Values values = newValues;
   const int landmarksBeforeStep = landmarks();
+  std::vector<std::size_t> factorsOfRecord;  // how many of `associations` each of this step's records added
   for (std::size_t i = 0; i < step.detections.size(); ++i) {
+    const std::size_t factorsBefore = associations.size();
     DetectionRecord record;
     record.step = k;
     record.detection = static_cast<int>(i);
@@ -140,11 +141,10 @@ void SemanticSlam::addStep(const TimeStep& step) {
 
     if (known) {
       if (record.truth && *record.truth != kNotALandmark) {
-        int index = -1;
-        for (int j = 0; j < landmarks(); ++j) {
-          if (landmarks_[j].truthId == *record.truth) index = j;
-        }
-        if (index < 0) index = addLandmark(factory_.initialLandmark(record.measurement, robot), *record.truth, values);
+        const auto found = landmarkOfTruthId_.find(*record.truth);
+        const int index = found != landmarkOfTruthId_.end()
+                              ? found->second
+                              : addLandmark(factory_.initialLandmark(record.measurement, robot), *record.truth, values);
         record.knownLandmark = index;
         associations.add(factory_.detectionFactor(pose, landmarks_[index].key, record.measurement));
         landmarks_[index].classBelief.update(record.semanticLikelihoods);
@@ -172,21 +172,16 @@ void SemanticSlam::addStep(const TimeStep& step) {
         }
       }
     }
+    factorsOfRecord.push_back(associations.size() - factorsBefore);
     records_.push_back(std::move(record));
   }
 
   // 4. Solve, and remember which smoother factors belong to which detection (they follow any propagation ones).
   const std::vector<FactorIndex> indices = smoother_->update(associations, values);
   std::size_t next = propagation.size();
-  for (std::size_t r = firstRecordOfStep_.back(); r < records_.size(); ++r) {
-    DetectionRecord& record = records_[r];
-    std::size_t count = 0;
-    if (record.createdLandmark || record.knownLandmark || options_.strategy != AssociationStrategy::Gpda) {
-      count = (record.createdLandmark || record.knownLandmark || !record.candidates.empty()) ? 1 : 0;
-    } else {
-      count = record.candidates.size();  // gpda: one per candidate
-    }
-    for (std::size_t c = 0; c < count; ++c) record.factors.push_back(indices.at(next++));
+  for (std::size_t i = 0; i < factorsOfRecord.size(); ++i) {
+    DetectionRecord& record = records_[firstRecordOfStep_.back() + i];
+    for (std::size_t c = 0; c < factorsOfRecord[i]; ++c) record.factors.push_back(indices.at(next++));
   }
   if (options_.warmStart) {
     bool switched = false;
@@ -210,17 +205,7 @@ void SemanticSlam::findCandidates(const JointMarginal& marginal, int landmarkCou
   for (int j = 0; j < landmarkCount; ++j) {
     const Landmark& landmark = landmarks_[j];
     const std::vector<FactorPtr> factor = {factory_.detectionFactor(pose, landmark.key, record.measurement)};
-    const JointMarginal pair({pose, landmark.key},
-                             {factory_.poseTangentDimension(), factory_.landmarkTangentDimension()},
-                             [&] {
-                               const int p = factory_.poseTangentDimension(), l = factory_.landmarkTangentDimension();
-                               Matrix joint(p + l, p + l);
-                               joint.topLeftCorner(p, p) = marginal.at(pose);
-                               joint.topRightCorner(p, l) = marginal.block(pose, landmark.key);
-                               joint.bottomLeftCorner(l, p) = joint.topRightCorner(p, l).transpose();
-                               joint.bottomRightCorner(l, l) = marginal.at(landmark.key);
-                               return joint;
-                             }());
+    const JointMarginal pair = marginal.restrictedTo({pose, landmark.key});
     const LinearizedLikelihood geometric = linearizedLikelihood(factor, estimate, pair);
     if (!gate_.accepts(geometric)) continue;
     const double semantic = landmark.classBelief.predictive(record.semanticLikelihoods);

@@ -28,6 +28,7 @@
 // every detection of every step processed has exactly one DetectionRecord.
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -93,7 +94,6 @@ class SemanticSlam {
  private:
   struct Landmark {
     Key key;
-    std::optional<int> truthId;  // `known` and map priors: the log's id
     ClassBelief classBelief;
   };
 
@@ -116,9 +116,8 @@ class SemanticSlam {
   AssociationGate gate_;
   std::unique_ptr<Smoother> smoother_;
   std::vector<Key> poseKeys_;
-  std::vector<double> times_;
-  std::vector<std::optional<Pose>> truePoses_;
   std::vector<Landmark> landmarks_;
+  std::map<int, int> landmarkOfTruthId_;  // `known` and map priors: the log's landmark id → landmark index
   std::vector<DetectionRecord> records_;
   std::vector<std::size_t> firstRecordOfStep_;
 };

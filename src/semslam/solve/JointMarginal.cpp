@@ -29,4 +29,26 @@ Matrix JointMarginal::block(Key row, Key column) const {
   return covariance_.block(offsets_[i], offsets_[j], dimensions_[i], dimensions_[j]);
 }
 
+JointMarginal JointMarginal::restrictedTo(const std::vector<Key>& keys) const {
+  std::vector<int> indices, dimensions;
+  int total = 0;
+  for (Key key : keys) {
+    indices.push_back(indexOf(key));
+    dimensions.push_back(dimensions_[indices.back()]);
+    total += dimensions.back();
+  }
+  Matrix covariance(total, total);
+  int row = 0;
+  for (std::size_t a = 0; a < keys.size(); ++a) {
+    int column = 0;
+    for (std::size_t b = 0; b < keys.size(); ++b) {
+      covariance.block(row, column, dimensions[a], dimensions[b]) =
+          covariance_.block(offsets_[indices[a]], offsets_[indices[b]], dimensions[a], dimensions[b]);
+      column += dimensions[b];
+    }
+    row += dimensions[a];
+  }
+  return JointMarginal(keys, std::move(dimensions), std::move(covariance));
+}
+
 }  // namespace semslam

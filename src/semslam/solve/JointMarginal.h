@@ -21,6 +21,9 @@ class JointMarginal {
   Matrix block(Key row, Key column) const;
   /// The marginal covariance of one variable.
   Matrix at(Key key) const { return block(key, key); }
+  /// The joint marginal of a subset of the keys, in the order given (a marginal of a Gaussian is its sub-block);
+  /// throws std::out_of_range for a key not asked for.
+  JointMarginal restrictedTo(const std::vector<Key>& keys) const;
 
  private:
   int indexOf(Key key) const;

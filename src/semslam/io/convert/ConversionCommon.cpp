@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <set>
 #include <sstream>
 
 #include "semslam/io/InputError.h"
@@ -40,6 +41,26 @@ int integerField(const std::string& path, const NumericRow& row, std::size_t col
     throw InputError(path, row.line, problem.str());
   }
   return static_cast<int>(value);
+}
+
+std::set<int> readLandmarkTruthTable(const std::string& path, int dimension, std::size_t columns,
+                                    const std::string& names, const std::string& idName,
+                                    std::vector<LandmarkTruth>& truth) {
+  std::set<int> ids;
+  for (const NumericRow& row : readDatasetTable(path, columns, names)) {
+    LandmarkTruth landmark;
+    landmark.id = integerField(path, row, 0, idName, 0, 1 << 30);
+    if (dimension == 2) {
+      landmark.state = Point2(row.values[1], row.values[2]);
+    } else {
+      landmark.state = Point3(row.values[1], row.values[2], row.values[3]);
+    }
+    if (!ids.insert(landmark.id).second) {
+      throw InputError(path, row.line, idName + " " + std::to_string(landmark.id) + " appears twice");
+    }
+    truth.push_back(landmark);
+  }
+  return ids;
 }
 
 std::optional<std::size_t> findStep(const std::vector<TimeStep>& steps, double time, double tolerance) {

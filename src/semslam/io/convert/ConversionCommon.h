@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,13 @@ std::vector<NumericRow> readDatasetTable(const std::string& path, std::size_t co
 /// integer in [minimum, maximum].
 int integerField(const std::string& path, const NumericRow& row, std::size_t column, const std::string& name,
                  int minimum, int maximum);
+
+/// Reads a landmark ground-truth table — an integer id (named `idName` in messages), then `dimension` coordinates,
+/// then any further columns (`columns` in all, named by `names`) — appending one LandmarkTruth per row to `truth`.
+/// Returns the ids; an id that appears twice is an InputError naming the file and line.
+std::set<int> readLandmarkTruthTable(const std::string& path, int dimension, std::size_t columns,
+                                    const std::string& names, const std::string& idName,
+                                    std::vector<LandmarkTruth>& truth);
 
 /// The index of the step whose time is within `tolerance` of `time` (steps sorted by time), if any.
 std::optional<std::size_t> findStep(const std::vector<TimeStep>& steps, double time, double tolerance);

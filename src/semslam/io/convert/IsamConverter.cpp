@@ -107,16 +107,8 @@ MeasurementLog convertIsam(const std::string& path, const ConvertOptions& option
   }
   if (std::filesystem::exists(landmarksPath)) {
     haveLandmarks = true;
-    std::set<int> ids;
-    for (const NumericRow& row : readDatasetTable(landmarksPath, 4, "landmark_id x y n_observations")) {
-      LandmarkTruth truth;
-      truth.id = integerField(landmarksPath, row, 0, "landmark id", 0, 1 << 30);
-      truth.state = Point2(row.values[1], row.values[2]);
-      if (!ids.insert(truth.id).second) {
-        throw InputError(landmarksPath, row.line, "landmark id " + std::to_string(truth.id) + " appears twice");
-      }
-      header.landmarkTruth.push_back(truth);
-    }
+    const std::set<int> ids = readLandmarkTruthTable(landmarksPath, 2, 4, "landmark_id x y n_observations",
+                                                     "landmark id", header.landmarkTruth);
     for (const TimeStep& step : raw.steps) {
       for (const Detection& detection : step.detections) {
         if (ids.count(*detection.truthId) == 0) {

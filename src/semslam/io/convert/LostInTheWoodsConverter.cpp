@@ -61,16 +61,8 @@ MeasurementLog convertLostInTheWoods(const std::string& folder, const ConvertOpt
   header.sensor.maxRange = 0.0;
   header.sensor.fieldOfView = 4.0 * std::numbers::pi / 3.0;
 
-  std::map<int, std::size_t> landmarkIndex;
-  for (const NumericRow& row : readDatasetTable(landmarkPath, 3, "id x y")) {
-    LandmarkTruth truth;
-    truth.id = integerField(landmarkPath, row, 0, "landmark id", 0, 1 << 30);
-    truth.state = Point2(row.values[1], row.values[2]);
-    if (!landmarkIndex.emplace(truth.id, header.landmarkTruth.size()).second) {
-      throw InputError(landmarkPath, row.line, "landmark id " + std::to_string(truth.id) + " appears twice");
-    }
-    header.landmarkTruth.push_back(truth);
-  }
+  const std::set<int> landmarkIds =
+      readLandmarkTruthTable(landmarkPath, 2, 3, "id x y", "landmark id", header.landmarkTruth);
 
   // Steps at the odometry stamps; the increment into step k uses row k-1's velocities.
   const std::vector<NumericRow> odometry = readDatasetTable(odometryPath, 3, "t v omega");
@@ -105,7 +97,7 @@ MeasurementLog convertLostInTheWoods(const std::string& folder, const ConvertOpt
     const std::optional<std::size_t> k = findStep(raw.steps, row.values[0], kTimeTolerance);
     if (!k) throw InputError(measurementPath, row.line, "time stamp matches no odometry time stamp");
     const int id = integerField(measurementPath, row, 1, "landmark id", 0, 1 << 30);
-    if (landmarkIndex.count(id) == 0) {
+    if (landmarkIds.count(id) == 0) {
       throw InputError(measurementPath, row.line,
                        "landmark id " + std::to_string(id) + " is not in landmarks_groundtruth.txt");
     }

@@ -50,16 +50,8 @@ MeasurementLog convertMrclam(const std::string& folder, const ConvertOptions& op
   header.sensor.maxRange = 0.0;
   header.sensor.fieldOfView = 1.2;
 
-  std::set<int> landmarks;
-  for (const NumericRow& row : readDatasetTable(landmarkPath, 5, "subject x y x_sd y_sd")) {
-    LandmarkTruth truth;
-    truth.id = integerField(landmarkPath, row, 0, "subject", 0, 1 << 30);
-    truth.state = Point2(row.values[1], row.values[2]);
-    if (!landmarks.insert(truth.id).second) {
-      throw InputError(landmarkPath, row.line, "subject " + std::to_string(truth.id) + " appears twice");
-    }
-    header.landmarkTruth.push_back(truth);
-  }
+  const std::set<int> landmarks =
+      readLandmarkTruthTable(landmarkPath, 2, 5, "subject x y x_sd y_sd", "subject", header.landmarkTruth);
   std::map<int, int> subjectOfBarcode;
   for (const NumericRow& row : readDatasetTable(barcodePath, 2, "subject barcode")) {
     const int subject = integerField(barcodePath, row, 0, "subject", 0, 1 << 30);

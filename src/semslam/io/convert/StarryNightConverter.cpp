@@ -121,16 +121,8 @@ MeasurementLog convertStarryNight(const std::string& folder, const ConvertOption
   header.sensor.kind = SensorKind::RangeBearingElevation;
   header.sensor.bodyToSensor = SE3();
 
-  std::map<int, std::size_t> landmarkIndex;
-  for (const NumericRow& row : readDatasetTable(landmarkPath, 4, "id x y z")) {
-    LandmarkTruth truth;
-    truth.id = integerField(landmarkPath, row, 0, "landmark id", 0, 1 << 30);
-    truth.state = Point3(row.values[1], row.values[2], row.values[3]);
-    if (!landmarkIndex.emplace(truth.id, header.landmarkTruth.size()).second) {
-      throw InputError(landmarkPath, row.line, "landmark id " + std::to_string(truth.id) + " appears twice");
-    }
-    header.landmarkTruth.push_back(truth);
-  }
+  const std::set<int> landmarkIds =
+      readLandmarkTruthTable(landmarkPath, 3, 4, "id x y z", "landmark id", header.landmarkTruth);
 
   const std::vector<NumericRow> velocities = readDatasetTable(velocityPath, 7, "t wx wy wz vx vy vz");
   const VelocityModel3 model(calibration.velocityVariance, calibration.angularVelocityVariance);
@@ -184,7 +176,7 @@ MeasurementLog convertStarryNight(const std::string& folder, const ConvertOption
     if (std::abs(row.values[1] - raw.steps[static_cast<std::size_t>(k)].time) > kTimeTolerance) {
       throw InputError(rbePath, row.line, "time stamp differs from that of step k = " + std::to_string(k));
     }
-    if (landmarkIndex.count(id) == 0) {
+    if (landmarkIds.count(id) == 0) {
       throw InputError(rbePath, row.line, "landmark id " + std::to_string(id) + " is not in landmarks_groundtruth.txt");
     }
     if (s[0] != row.values[0] || s[2] != row.values[2] || std::abs(s[1] - row.values[1]) > kTimeTolerance) {
