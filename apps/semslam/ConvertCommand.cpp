@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "Commands.h"
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 #include "semslam/io/MeasurementLogFile.h"
 #include "semslam/io/convert/DatasetConverters.h"
 

@@ -11,8 +11,8 @@
 
 #include "Commands.h"
 #include "semslam/eval/TrajectoryEvaluation.h"
-#include "semslam/eval/TrajectoryFormat.h"
-#include "semslam/io/InputError.h"
+#include "semslam/io/TrajectoryFormat.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam::cli {
 

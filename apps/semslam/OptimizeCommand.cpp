@@ -10,7 +10,7 @@
 
 #include "Commands.h"
 #include "semslam/io/AtomicFile.h"
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 #include "semslam/io/PoseGraphAnchor.h"
 #include "semslam/io/PoseGraphFile.h"
 #include "semslam/io/PoseGraphReplay.h"

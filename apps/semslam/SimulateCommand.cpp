@@ -15,12 +15,12 @@
 #include <string>
 
 #include "Commands.h"
-#include "semslam/eval/TrajectoryFormat.h"
-#include "semslam/io/InputError.h"
+#include "semslam/io/TrajectoryFormat.h"
+#include "semslam/core/InputError.h"
 #include "semslam/io/MeasurementLogFile.h"
 #include "semslam/sim/Aliased2dSimulator.h"
 #include "semslam/sim/GeneratedPath.h"
-#include "semslam/sim/ScenarioFile.h"
+#include "semslam/io/ScenarioFile.h"
 #include "semslam/sim/SemanticSimulator.h"
 #include "semslam/sim/SimulationStreams.h"
 #include "semslam/sim/TrajectoryInput.h"

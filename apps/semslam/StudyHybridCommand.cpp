@@ -1,6 +1,5 @@
 // semslam study hybrid: paper A's statistical study (sec. V, Fig. 5) on aliased2d, with and without the classifier
-// model, over tracks and alphas (src/semslam/hybrid/HybridStudy.h).
-
+// model, over tracks and alphas (src/semslam/study/HybridStudy.h).
 
 #include <chrono>
 #include <cstdio>
@@ -8,10 +7,11 @@
 #include <string>
 
 #include "Commands.h"
-#include "semslam/hybrid/HybridStudy.h"
-#include "semslam/io/InputError.h"
-#include "semslam/sim/ScenarioFile.h"
-#include "semslam/study/ProgressBar.h"
+#include "MethodOptions.h"
+#include "semslam/study/HybridStudy.h"
+#include "semslam/core/InputError.h"
+#include "semslam/io/ScenarioFile.h"
+#include "semslam/core/ProgressBar.h"
 
 namespace semslam::cli {
 namespace {
@@ -22,12 +22,7 @@ struct StudyHybridOptions {
   int steps = 10;
   std::vector<double> alphas{0.0, 0.1, 0.2, 0.3, 0.4, 0.5};
   std::uint64_t seed = 1;
-  int samples = 1000;
-  std::string weights = "sampled";
-  int importanceIterations = 1;
-  double pruneRatio = 150.0;
-  double gateRatio = 1e5;
-  int maxComponents = 0;
+  HybridOptions hybrid;
   int threads = 2;
   std::string out;
 };
@@ -40,12 +35,7 @@ void runStudy(const StudyHybridOptions& o) {
   options.alphas = o.alphas;
   options.seed = o.seed;
   options.threads = o.threads;
-  options.hybrid.samples = o.samples;
-  options.hybrid.weights = parseWeightMethod(o.weights);
-  options.hybrid.importanceIterations = o.importanceIterations;
-  options.hybrid.pruneRatio = o.pruneRatio;
-  options.hybrid.gateRatio = o.gateRatio;
-  options.hybrid.maxComponents = o.maxComponents;
+  options.hybrid = o.hybrid;
   for (double a : o.alphas) {
     if (!(a >= 0.0 && a <= 1.0)) throw InputError("--alpha: every alpha must be in [0, 1]");
   }
@@ -73,19 +63,7 @@ void addStudyHybridCommand(CLI::App& study) {
       ->delimiter(',')
       ->capture_default_str();
   hybrid->add_option("--seed", o->seed, "seed of tracks and draws")->capture_default_str();
-  hybrid->add_option("--samples", o->samples, "samples per weight")->check(CLI::Range(2, 100000000))->capture_default_str();
-  hybrid->add_option("--weights", o->weights, "sampled (A, eq. 17), importance or analytic")
-      ->check(CLI::IsMember({"sampled", "importance", "analytic"}))
-      ->capture_default_str();
-  hybrid->add_option("--importance-iterations", o->importanceIterations,
-                     "importance weights: linearisations of the proposal (1: at the mean; > 1: iterated update)")
-      ->check(CLI::Range(1, 100))
-      ->capture_default_str();
-  hybrid->add_option("--prune-ratio", o->pruneRatio, "prune w < w_max / ratio")->capture_default_str();
-  hybrid->add_option("--gate-ratio", o->gateRatio, "gate before sampling at w_max / ratio")->capture_default_str();
-  hybrid->add_option("--max-components", o->maxComponents, "cap on components (0: none)")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
+  addHybridOptions(hybrid, o->hybrid);
   hybrid->add_option("--threads", o->threads, "worker threads")->check(CLI::Range(1, 64))->capture_default_str();
   hybrid->add_option("--out", o->out, "output folder")->required();
   hybrid->callback([o] { runStudy(*o); });

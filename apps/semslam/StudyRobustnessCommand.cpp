@@ -21,9 +21,9 @@
 
 #include "Commands.h"
 #include "semslam/io/AtomicFile.h"
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 #include "semslam/io/MeasurementLogFile.h"
-#include "semslam/study/ProgressBar.h"
+#include "semslam/core/ProgressBar.h"
 #include "semslam/study/RobustnessStudy.h"
 #include "semslam/solve/SmootherFactory.h"
 

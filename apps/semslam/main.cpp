@@ -6,7 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "Commands.h"
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"semslam: SLAM with ambiguous data association (hybrid belief and semantic max-mixtures)"};

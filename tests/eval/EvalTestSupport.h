@@ -11,7 +11,7 @@
 #include <functional>
 #include <string>
 
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam::test {
 

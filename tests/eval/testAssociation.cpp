@@ -5,7 +5,7 @@
 #include <random>
 
 #include "semslam/eval/Association.h"
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 namespace {

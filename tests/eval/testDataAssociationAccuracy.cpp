@@ -10,7 +10,7 @@
 #include <random>
 
 #include "semslam/eval/DataAssociationAccuracy.h"
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 namespace {

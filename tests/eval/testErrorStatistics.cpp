@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "semslam/eval/ErrorStatistics.h"
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 namespace {

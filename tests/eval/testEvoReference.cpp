@@ -14,10 +14,10 @@
 #include <string>
 
 #include "support/TestData.h"
-#include "semslam/eval/KittiFormat.h"
+#include "semslam/io/KittiFormat.h"
 #include "semslam/eval/TrajectoryEvaluation.h"
-#include "semslam/eval/TrajectoryFormat.h"
-#include "semslam/eval/TumFormat.h"
+#include "semslam/io/TrajectoryFormat.h"
+#include "semslam/io/TumFormat.h"
 
 namespace semslam {
 namespace {

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "semslam/eval/HypothesisMetrics.h"
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 namespace {

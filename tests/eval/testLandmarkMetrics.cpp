@@ -6,7 +6,7 @@
 
 #include "semslam/eval/LandmarkMetrics.h"
 #include "semslam/eval/PlanarAlignment.h"
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 namespace {

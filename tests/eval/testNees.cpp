@@ -7,9 +7,9 @@
 #include <cmath>
 #include <random>
 
-#include "semslam/eval/ChiSquare.h"
+#include "semslam/core/ChiSquare.h"
 #include "semslam/eval/Nees.h"
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 namespace {

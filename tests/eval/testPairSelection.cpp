@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "semslam/eval/PairSelection.h"
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 namespace {

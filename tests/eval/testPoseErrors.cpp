@@ -10,7 +10,7 @@
 #include "semslam/eval/PoseRelation.h"
 #include "semslam/eval/RelativePoseError.h"
 #include "semslam/eval/TrajectoryEvaluation.h"
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 namespace {

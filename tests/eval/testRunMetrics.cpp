@@ -10,9 +10,10 @@
 #include <nlohmann/json.hpp>
 
 #include "eval/EvalTestSupport.h"
+#include "semslam/io/RunMetricsFile.h"
 #include "semslam/eval/RunEvaluation.h"
 #include "semslam/eval/RunMetrics.h"
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 namespace {

@@ -8,7 +8,7 @@
 
 #include "semslam/eval/PlanarAlignment.h"
 #include "semslam/eval/TrajectoryMetrics.h"
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 namespace {

@@ -6,7 +6,7 @@
 #include <random>
 
 #include "semslam/eval/Umeyama.h"
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 namespace {

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <string>
 
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam::test {
 

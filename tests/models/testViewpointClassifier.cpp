@@ -15,7 +15,7 @@
 
 #include <unistd.h>
 
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 #include "semslam/models/AnalyticViewpointClassifier.h"
 #include "semslam/models/ClassifierFactory.h"
 #include "semslam/models/Sampling.h"

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "SimTesting.h"
-#include "semslam/io/InputError.h"
-#include "semslam/sim/ScenarioFile.h"
+#include "semslam/core/InputError.h"
+#include "semslam/io/ScenarioFile.h"
 
 namespace semslam {
 namespace {

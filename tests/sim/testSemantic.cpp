@@ -12,8 +12,8 @@
 
 #include "../support/TestData.h"
 #include "SimTesting.h"
-#include "semslam/eval/KittiFormat.h"
-#include "semslam/io/InputError.h"
+#include "semslam/io/KittiFormat.h"
+#include "semslam/core/InputError.h"
 #include "semslam/io/MeasurementLogFile.h"
 #include "semslam/models/RangeBearingElevationSensor3.h"
 #include "semslam/models/RangeBearingSensor2.h"

@@ -9,7 +9,7 @@
 #include "../support/TestData.h"
 #include "SimTesting.h"
 #include "semslam/io/MeasurementLogFile.h"
-#include "semslam/sim/ScenarioFile.h"
+#include "semslam/io/ScenarioFile.h"
 
 namespace semslam {
 namespace {

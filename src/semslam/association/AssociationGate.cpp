@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "semslam/eval/ChiSquare.h"
+#include "semslam/core/ChiSquare.h"
 
 namespace semslam {
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "semslam/eval/PoseRelation.h"
-#include "semslam/eval/Trajectory.h"
+#include "semslam/models/Trajectory.h"
 
 namespace semslam {
 

@@ -1,6 +1,6 @@
 #include "semslam/eval/Alignment.h"
 
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 

@@ -12,7 +12,7 @@
 
 #include <string>
 
-#include "semslam/eval/Trajectory.h"
+#include "semslam/models/Trajectory.h"
 #include "semslam/eval/Umeyama.h"
 
 namespace semslam {

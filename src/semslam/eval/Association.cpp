@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 

@@ -16,7 +16,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "semslam/eval/Trajectory.h"
+#include "semslam/models/Trajectory.h"
 
 namespace semslam {
 

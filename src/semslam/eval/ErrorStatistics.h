@@ -14,6 +14,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "semslam/core/PairwiseSum.h"
+
 namespace semslam {
 
 struct ErrorStatistics {
@@ -29,8 +31,5 @@ struct ErrorStatistics {
 
 /// The statistics of `errors`; throws InputError when it is empty (evo raises there too).
 ErrorStatistics computeErrorStatistics(const std::vector<double>& errors);
-
-/// numpy's pairwise sum of `values` (np.sum / np.add.reduce on a contiguous float64 array).
-double pairwiseSum(const double* values, std::size_t n);
 
 }  // namespace semslam

@@ -6,7 +6,7 @@
 #include <deque>
 #include <limits>
 
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 namespace {

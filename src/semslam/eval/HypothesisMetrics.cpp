@@ -8,7 +8,7 @@
 #include <variant>
 
 #include "semslam/eval/ErrorStatistics.h"
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 namespace {
@@ -18,26 +18,7 @@ Vector positionOf(const Pose& pose) {
   return std::get<SE3>(pose).translation();
 }
 
-std::vector<double> weightsOf(const std::vector<HypothesisComponent>& components) {
-  std::vector<double> weights;
-  weights.reserve(components.size());
-  for (const HypothesisComponent& c : components) weights.push_back(c.weight);
-  return weights;
-}
-
 }  // namespace
-
-std::vector<double> normalizeWeights(const std::vector<double>& weights) {
-  if (weights.empty()) throw InputError("weights: none given");
-  for (double w : weights) {
-    if (!(w >= 0.0) || !std::isfinite(w)) throw InputError("weights: a weight is negative or not finite");
-  }
-  const double sum = pairwiseSum(weights.data(), weights.size());
-  if (!(sum > 0.0)) throw InputError("weights: they sum to zero");
-  std::vector<double> normalized(weights.size());
-  for (std::size_t i = 0; i < weights.size(); ++i) normalized[i] = weights[i] / sum;
-  return normalized;
-}
 
 double entropy(const std::vector<double>& weights) {
   double h = 0.0;
@@ -53,43 +34,9 @@ double effectiveSampleSize(const std::vector<double>& weights) {
   return 1.0 / squares;
 }
 
-std::vector<AssociationHypothesis> associationMarginal(const std::vector<HypothesisComponent>& components) {
-  const std::vector<double> weights = normalizeWeights(weightsOf(components));
-  std::map<AssociationHistory, double> marginal;
-  for (std::size_t i = 0; i < components.size(); ++i) marginal[components[i].associations] += weights[i];
-  std::vector<AssociationHypothesis> out;
-  out.reserve(marginal.size());
-  for (auto& [history, weight] : marginal) out.push_back({history, weight});
-  std::stable_sort(out.begin(), out.end(),
-                   [](const AssociationHypothesis& a, const AssociationHypothesis& b) { return a.weight > b.weight; });
-  return out;
-}
-
-Matrix classMarginals(const std::vector<HypothesisComponent>& components, int classes) {
-  if (classes < 1) throw InputError("class marginals: the number of classes must be >= 1");
-  const std::vector<double> weights = normalizeWeights(weightsOf(components));
-  const std::size_t objects = components.front().classes.size();
-  Matrix marginal = Matrix::Zero(static_cast<Eigen::Index>(objects), classes);
-  for (std::size_t i = 0; i < components.size(); ++i) {
-    const std::vector<int>& c = components[i].classes;
-    if (c.size() != objects) {
-      throw InputError("class marginals: component " + std::to_string(i) + " has " + std::to_string(c.size()) +
-                       " objects, component 0 has " + std::to_string(objects));
-    }
-    for (std::size_t j = 0; j < objects; ++j) {
-      if (c[j] < 0 || c[j] >= classes) {
-        throw InputError("class marginals: component " + std::to_string(i) + " gives object " + std::to_string(j) +
-                         " class " + std::to_string(c[j]) + ", outside [0, " + std::to_string(classes) + ")");
-      }
-      marginal(static_cast<Eigen::Index>(j), c[j]) += weights[i];
-    }
-  }
-  return marginal;
-}
-
 HypothesisMetrics evaluateHypotheses(const std::vector<HypothesisComponent>& components,
                                      const std::optional<Pose>& truePose, double disambiguationThreshold) {
-  const std::vector<double> weights = normalizeWeights(weightsOf(components));
+  const std::vector<double> weights = normalizeWeights(componentWeights(components));
   HypothesisMetrics m;
   m.components = components.size();
   m.heaviestComponent = static_cast<std::size_t>(std::max_element(weights.begin(), weights.end()) - weights.begin());

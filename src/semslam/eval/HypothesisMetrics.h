@@ -38,26 +38,10 @@
 #include <vector>
 
 #include "semslam/geometry/Matrix.h"
+#include "semslam/models/HypothesisComponent.h"
 #include "semslam/models/MeasurementLog.h"
 
 namespace semslam {
-
-/// β_1:k: for each time step, the landmark id each detection of that step is associated with.
-using AssociationHistory = std::vector<std::vector<int>>;
-
-/// One component of a hybrid belief at the current time k.
-struct HypothesisComponent {
-  double weight = 0.0;               ///< w^C_β1:k (any positive scale)
-  AssociationHistory associations;   ///< β_1:k
-  std::vector<int> classes;          ///< C: the class of each object (index j), in [0, M)
-  Pose pose = SE2();                 ///< mean of the current pose x_k
-  Matrix covariance;                 ///< covariance of x_k (right perturbation, translation first)
-};
-
-struct AssociationHypothesis {
-  AssociationHistory associations;
-  double weight = 0.0;  ///< P(β_1:k | H_k)
-};
 
 struct HypothesisMetrics {
   std::size_t components = 0;                  ///< N_k
@@ -72,18 +56,10 @@ struct HypothesisMetrics {
   double errorWeightedAverage = std::numeric_limits<double>::quiet_NaN();  ///< x̃^{w_avg}
 };
 
-/// w_i / Σ w; throws InputError for an empty vector, negative or non-finite weights, or a zero sum.
-std::vector<double> normalizeWeights(const std::vector<double>& weights);
 /// −Σ w log w of the normalised weights (natural log).
 double entropy(const std::vector<double>& weights);
 /// 1 / Σ w² of the normalised weights.
 double effectiveSampleSize(const std::vector<double>& weights);
-
-/// Eq. 8: the association marginal, heaviest first (ties: lexicographically smaller history first).
-std::vector<AssociationHypothesis> associationMarginal(const std::vector<HypothesisComponent>& components);
-/// Eq. 7 per object: row j holds P(c_j = m), m = 0..classes−1. Every component must have the same number of
-/// objects, with classes in [0, classes).
-Matrix classMarginals(const std::vector<HypothesisComponent>& components, int classes);
 
 /// The metrics above at the current time; `truePose` (the true x_k) enables the two errors.
 HypothesisMetrics evaluateHypotheses(const std::vector<HypothesisComponent>& components,

@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "semslam/eval/HungarianAssignment.h"
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 #include "semslam/models/MeasurementLog.h"
 
 namespace semslam {

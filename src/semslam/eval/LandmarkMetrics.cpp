@@ -6,7 +6,7 @@
 #include <type_traits>
 #include <variant>
 
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 

@@ -23,15 +23,9 @@
 #include "semslam/eval/Umeyama.h"
 #include "semslam/geometry/Matrix.h"
 #include "semslam/models/MeasurementLog.h"
+#include "semslam/models/RunResult.h"
 
 namespace semslam {
-
-/// A landmark as a method estimates it.
-struct EstimatedLandmark {
-  int id = 0;                          ///< the method's own id (what associations refer to)
-  LandmarkState state = Point2(0.0, 0.0);
-  Vector classProbabilities;           ///< P(c) for c = 0..M−1; empty when the method estimates no class
-};
 
 struct LandmarkMetrics {
   std::size_t estimated = 0;           ///< N_est

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <string>
 
-#include "semslam/eval/ChiSquare.h"
+#include "semslam/core/ChiSquare.h"
 #include "semslam/eval/ErrorStatistics.h"
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 

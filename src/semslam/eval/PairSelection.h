@@ -19,7 +19,7 @@
 #include <utility>
 #include <vector>
 
-#include "semslam/eval/Trajectory.h"
+#include "semslam/models/Trajectory.h"
 
 namespace semslam {
 

@@ -14,7 +14,7 @@
 
 #include "semslam/eval/PairSelection.h"
 #include "semslam/eval/PoseRelation.h"
-#include "semslam/eval/Trajectory.h"
+#include "semslam/models/Trajectory.h"
 
 namespace semslam {
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <variant>
 
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 namespace {

@@ -34,20 +34,9 @@
 #include "semslam/eval/RunMetrics.h"
 #include "semslam/eval/TrajectoryMetrics.h"
 #include "semslam/models/MeasurementLog.h"
+#include "semslam/models/RunResult.h"
 
 namespace semslam {
-
-/// What a method reports at the end of a run. Leave a member empty when the method does not produce it.
-struct RunResult {
-  std::string method;
-  std::vector<Pose> poses;                                     ///< final estimate of each step's pose
-  std::vector<Matrix> poseCovariances;                         ///< marginal covariance of each pose (tangent)
-  std::vector<std::vector<std::optional<int>>> associations;   ///< [step][detection]: landmark id or null hypothesis
-  std::vector<EstimatedLandmark> landmarks;
-  std::vector<HypothesisComponent> components;                 ///< hybrid belief at the last step
-  std::vector<double> heaviestAssociationWeights;              ///< hybrid: max_β P(β | H_k), one per step
-  double timeSeconds = std::numeric_limits<double>::quiet_NaN();
-};
 
 struct RunEvaluationOptions {
   bool alignTrajectory = true;

@@ -1,5 +1,5 @@
 #pragma once
-// RunMetrics: everything one run of one method is scored by, and its file, metrics.json. Every method (paper A's
+// RunMetrics: everything one run of one method is scored by. Every method (paper A's
 // hybrid belief, paper B's five strategies, any later one) writes the same schema, so runs can be compared and
 // aggregated by one script. docs/metrics.md documents every field: definition, units, conventions.
 //
@@ -7,21 +7,13 @@
 // accuracy without detection ground truth, NEES without covariances) is NaN (numbers), std::nullopt (counts) or
 // an empty `alignment`; in the file it is `null`. Non-finite numbers are written as `null` too (JSON has no NaN).
 // `method` is always a string (possibly empty).
-//
-// File: one JSON object, keys in the fixed order of runMetricsKeys() (the order of docs/metrics.md), two-space
-// indentation, numbers in shortest round-trip form (reading gives back the same doubles bit for bit). Written
-// atomically (io/AtomicFile.h). Reading requires "schema": "semslam.metrics/1", accepts a missing known key as
-// null and ignores unknown keys; a known key of the wrong type throws InputError(file, 0, problem).
+// Its file, metrics.json, is io/RunMetricsFile.h's.
 
 #include <limits>
 #include <optional>
 #include <string>
-#include <string_view>
-#include <vector>
 
 namespace semslam {
-
-inline constexpr std::string_view kRunMetricsSchema = "semslam.metrics/1";
 
 struct RunMetrics {
   static constexpr double kNotApplicable = std::numeric_limits<double>::quiet_NaN();
@@ -60,18 +52,5 @@ struct RunMetrics {
   double disambiguatedFraction = kNotApplicable;
   std::optional<long long> components, histories;
 };
-
-/// The keys of metrics.json, in file order ("schema" first).
-const std::vector<std::string>& runMetricsKeys();
-
-/// The metrics.json text (ends with a newline).
-std::string runMetricsToJson(const RunMetrics& metrics);
-/// Parses metrics.json text; `source` names it in errors (a file name, or "<string>").
-RunMetrics runMetricsFromJson(const std::string& text, const std::string& source = "<string>");
-
-/// Writes metrics.json atomically; throws std::runtime_error when the file cannot be written.
-void writeRunMetrics(const std::string& path, const RunMetrics& metrics);
-/// Reads metrics.json; throws InputError for an unreadable or malformed file.
-RunMetrics readRunMetrics(const std::string& path);
 
 }  // namespace semslam

@@ -13,7 +13,7 @@
 #include "semslam/eval/Alignment.h"
 #include "semslam/eval/ErrorStatistics.h"
 #include "semslam/eval/RelativePoseError.h"
-#include "semslam/eval/Trajectory.h"
+#include "semslam/models/Trajectory.h"
 
 namespace semslam {
 

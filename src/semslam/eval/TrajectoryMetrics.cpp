@@ -4,7 +4,7 @@
 
 #include "semslam/eval/PlanarAlignment.h"
 #include "semslam/eval/PoseRelation.h"
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 namespace {

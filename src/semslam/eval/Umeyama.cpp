@@ -5,7 +5,7 @@
 #include <Eigen/LU>
 #include <Eigen/SVD>
 
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "semslam/hybrid/Pruning.h"
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 namespace {

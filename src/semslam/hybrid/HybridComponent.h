@@ -15,7 +15,7 @@
 #include <memory>
 #include <vector>
 
-#include "semslam/eval/HypothesisMetrics.h"
+#include "semslam/models/HypothesisComponent.h"
 #include "semslam/solve/Smoother.h"
 
 namespace semslam {

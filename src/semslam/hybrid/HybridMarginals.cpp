@@ -2,7 +2,7 @@
 
 namespace semslam {
 
-HybridMarginals hybridMarginals(const HybridBelief& belief, const std::optional<Pose>& truePose) {
+HybridMarginals hybridMarginals(const HybridBelief& belief) {
   const HybridProblem& problem = belief.problem();
   const int k = belief.steps() - 1;
   const Key pose = poseKey(static_cast<std::uint64_t>(k));
@@ -39,7 +39,6 @@ HybridMarginals hybridMarginals(const HybridBelief& belief, const std::optional<
     const Vector2 d = x.translation() - out.mixtureMean;
     out.mixtureCovariance += h.weight * (R * h.covariance.topLeftCorner<2, 2>() * R.transpose() + d * d.transpose());
   }
-  out.metrics = evaluateHypotheses(out.components, truePose);
   return out;
 }
 

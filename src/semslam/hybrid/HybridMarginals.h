@@ -1,7 +1,7 @@
 #pragma once
-// HybridMarginals: what a hybrid belief says at time k (A, eq. 6-8), and paper A's metrics of it.
+// HybridMarginals: what a hybrid belief says at time k (A, eq. 6-8).
 //
-//   components         each component as eval's HypothesisComponent: weight, β_1:k with the log's object ids
+//   components         each component as a HypothesisComponent (models/HypothesisComponent.h): weight, β_1:k with the log's object ids
 //                      (−1 for a dropped detection), the class of every object (−1: not associated, collapsed),
 //                      mean and covariance (right perturbation, translation first) of the current pose x_k;
 //   association        P(β_1:k | H_k) = Σ_C w^C_β1:k (eq. 8), heaviest first;
@@ -11,14 +11,14 @@
 //   mixture            the mixture posterior over the current position (eq. 6) summarised by its first two
 //                      moments in the world frame: μ = Σ w_i μ_i, Σ = Σ w_i (R_i Σ_i,tt R_iᵀ + (μ_i − μ)(μ_i − μ)ᵀ),
 //                      Σ_i,tt the translation block of the component's tangent covariance and R_i its rotation;
-//   metrics            eval/HypothesisMetrics.h's entropy over the association marginal (eq. 8), det Σ of the
-//                      heaviest component's position, x̃^{w_max}, x̃^{w_avg}, ESS, max_β P(β | H_k).
+// Paper A's metrics of these (entropy, det Σ, errors against the true pose) are eval/HypothesisMetrics.h's; the
+// estimator computes none of them.
 
 #include <optional>
 #include <vector>
 
-#include "semslam/eval/HypothesisMetrics.h"
 #include "semslam/hybrid/HybridBelief.h"
+#include "semslam/models/HypothesisComponent.h"
 
 namespace semslam {
 
@@ -29,10 +29,9 @@ struct HybridMarginals {
   Matrix classes;  ///< N x M, empty without semantics
   Vector2 mixtureMean = Vector2::Zero();
   Matrix2 mixtureCovariance = Matrix2::Zero();
-  HypothesisMetrics metrics;
 };
 
-/// The marginals of `belief` at its current step; `truePose` enables the errors.
-HybridMarginals hybridMarginals(const HybridBelief& belief, const std::optional<Pose>& truePose);
+/// The marginals of `belief` at its current step.
+HybridMarginals hybridMarginals(const HybridBelief& belief);
 
 }  // namespace semslam

@@ -6,7 +6,7 @@
 #include "semslam/association/ClassBelief.h"
 #include "semslam/factors/ViewpointSemanticFactor.h"
 #include "semslam/hybrid/CartesianGateFactor.h"
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 #include "semslam/models/ClassifierFactory.h"
 
 namespace semslam {

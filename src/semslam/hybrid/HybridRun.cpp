@@ -13,8 +13,8 @@ HybridRunOutput runHybrid(const MeasurementLog& log, const HybridOptions& option
   for (int k = 0; k < steps; ++k) {
     HybridStepRecord record;
     record.report = belief.update(log.steps[k]);
-    record.marginals = hybridMarginals(belief, log.steps[k].truePose);
-    out.result.heaviestAssociationWeights.push_back(record.marginals.metrics.heaviestAssociationWeight);
+    record.marginals = hybridMarginals(belief);
+    out.result.heaviestAssociationWeights.push_back(record.marginals.association.front().weight);  // max_β P(β | H_k)
     out.steps.push_back(std::move(record));
     if (progress) progress(k + 1, steps);
   }

@@ -1,7 +1,7 @@
 #pragma once
 // HybridRun: paper A's hybrid belief run over a whole measurement log, step by step, recording what the belief
 // said at every step (HybridMarginals) and what each update did (HybridStepReport), and the final estimate as
-// a RunResult for eval/RunEvaluation.h:
+// a RunResult (models/RunResult.h):
 //   poses, poseCovariances   the heaviest final component's smoothed poses and their marginal covariances;
 //   associations             its association history (log ids; std::nullopt for a dropped detection);
 //   landmarks                its object estimates, with the class marginal (eq. 7) where semantics are used;
@@ -11,7 +11,7 @@
 #include <optional>
 #include <vector>
 
-#include "semslam/eval/RunEvaluation.h"
+#include "semslam/models/RunResult.h"
 #include "semslam/hybrid/HybridBelief.h"
 #include "semslam/hybrid/HybridMarginals.h"
 

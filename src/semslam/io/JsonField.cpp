@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam::jsonio {
 

@@ -8,7 +8,7 @@
 #include <system_error>
 
 #include "semslam/graph/Key.h"
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 

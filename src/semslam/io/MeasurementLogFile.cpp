@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "semslam/io/AtomicFile.h"
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 #include "semslam/io/MeasurementLogJson.h"
 
 namespace semslam {

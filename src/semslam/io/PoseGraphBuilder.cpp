@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 

@@ -8,7 +8,7 @@
 #include "semslam/factors/RelativePointFactor.h"
 #include "semslam/io/AtomicFile.h"
 #include "semslam/io/G2oIds.h"
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 #include "semslam/io/PoseGraphReaders.h"
 #include "semslam/io/TriangularEntries.h"
 

@@ -5,7 +5,7 @@
 #include <ostream>
 
 #include "semslam/eval/LandmarkMetrics.h"
-#include "semslam/eval/TumFormat.h"
+#include "semslam/io/TumFormat.h"
 #include "semslam/io/AtomicFile.h"
 
 namespace semslam {

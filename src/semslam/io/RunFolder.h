@@ -10,33 +10,26 @@
 //                          in trajectory.tum) and landmark's marginal covariance, for covariance ellipses
 //   associations.csv       `step,detection,landmark,weight,truth` (landmark `null` for the null hypothesis, truth
 //                          `not-a-landmark` for clutter, empty where unknown)
-// metrics.json is written by eval/RunMetrics. Every file is written atomically (io/AtomicFile.h); a file whose
+// metrics.json is written by io/RunMetricsFile.h. Every file is written atomically (io/AtomicFile.h); a file whose
 // data is empty (no truth, no associations) is not written.
 
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "semslam/eval/Trajectory.h"
+#include "semslam/models/Trajectory.h"
 #include "semslam/models/MeasurementLog.h"
+#include "semslam/models/RunResult.h"
 
 namespace semslam {
 
-/// One row of landmarks.csv and covariances.csv (eval/LandmarkMetrics.h has the evaluation side's landmark).
+/// One row of landmarks.csv and covariances.csv (models/RunResult.h has the estimator's EstimatedLandmark).
 struct RunLandmark {
   int id = 0;
   Vector position;               // 2 or 3 numbers
   int classIndex = -1;           // -1: no class belief
   double classProbability = 0.0;
   std::optional<Matrix> positionCovariance;
-};
-
-struct AssociationRecord {
-  int step = 0;
-  int detection = 0;
-  std::optional<int> landmark;   // nullopt: the null hypothesis
-  double weight = 1.0;
-  std::optional<int> truth;      // a landmark id, kNotALandmark for clutter, nullopt when unknown
 };
 
 struct RunOutput {

@@ -1,5 +1,5 @@
 #pragma once
-// Building a run folder's contents (RunFolder.h) from what a method reports (eval/RunEvaluation.h's RunResult)
+// Building a run folder's contents (RunFolder.h) from what a method reports (models/RunResult.h)
 // and the log it ran on: every method writes its folder through this one function.
 //
 //   trajectory      result.poses with the steps' times;  truth: the steps' true poses, when every step has one;

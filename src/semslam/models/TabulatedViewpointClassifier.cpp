@@ -9,7 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 

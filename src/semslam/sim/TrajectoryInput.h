@@ -1,5 +1,5 @@
 #pragma once
-// TrajectoryInput: a trajectory read from a file (eval's TUM or KITTI reader) made into a simulator's truth.
+// TrajectoryInput: a trajectory read from a file (io's TUM or KITTI reader) made into a simulator's truth.
 //
 //   frame    KITTI poses are camera poses (x right, y down, z forward) in the first camera's frame; the
 //            simulators' sensors look along the body's x axis with z up. TrajectoryFrame::Camera re-expresses
@@ -19,7 +19,7 @@
 
 #include <string>
 
-#include "semslam/eval/Trajectory.h"
+#include "semslam/models/Trajectory.h"
 #include "semslam/sim/SimTrajectory.h"
 
 namespace semslam {

@@ -36,8 +36,7 @@
 #include "semslam/association/AssociationGate.h"
 #include "semslam/association/ClassBelief.h"
 #include "semslam/association/MeasurementFactory.h"
-#include "semslam/eval/RunEvaluation.h"
-#include "semslam/io/RunFolder.h"
+#include "semslam/models/RunResult.h"
 #include "semslam/slam/AssociationStrategy.h"
 #include "semslam/solve/SmootherFactory.h"
 

@@ -14,7 +14,7 @@
 #include <thread>
 #include <tuple>
 
-#include "semslam/slam/SemanticSlamRun.h"
+#include "semslam/run/RunMethod.h"
 
 namespace semslam {
 
@@ -118,13 +118,13 @@ RobustnessStudy runRobustnessStudy(const MeasurementLog& log, const RobustnessSt
       row.level = cell.level;
       row.seed = cell.seed;
       row.method = strategyName(strategy);
-      SemanticSlamRunOptions runOptions;
+      MethodOptions runOptions;
+      runOptions.method = methodFor(strategy);
       runOptions.slam = options.slam;
-      runOptions.slam.strategy = strategy;
       runOptions.poseCovariances = false;
       runOptions.runFolder = false;
       try {
-        const SemanticSlamRun run = runSemanticSlam(perturbed, runOptions);
+        const MethodRun run = runMethod(perturbed, runOptions);
         const RunMetrics& m = run.evaluation.metrics;
         row.ateRmse = m.ateRmse;
         row.rotRmse = m.rotRmse;

@@ -6,7 +6,7 @@
 #include <set>
 #include <sstream>
 
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 #include "semslam/io/convert/ClassLabels.h"
 #include "semslam/io/convert/Keyframing.h"
 

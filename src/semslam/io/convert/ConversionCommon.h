@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "semslam/eval/NumericTable.h"
+#include "semslam/io/NumericTable.h"
 #include "semslam/io/convert/ConvertOptions.h"
 #include "semslam/models/MeasurementLog.h"
 

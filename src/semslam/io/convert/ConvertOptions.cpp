@@ -3,7 +3,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 
 namespace semslam {
 

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <string_view>
 
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 #include "semslam/io/LineReader.h"
 #include "semslam/io/TriangularEntries.h"
 #include "semslam/io/convert/ConversionCommon.h"

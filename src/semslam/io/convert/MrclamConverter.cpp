@@ -5,7 +5,7 @@
 #include <set>
 #include <sstream>
 
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 #include "semslam/io/convert/ConversionCommon.h"
 #include "semslam/models/UnicycleModel.h"
 

@@ -4,7 +4,7 @@
 #include <map>
 #include <sstream>
 
-#include "semslam/io/InputError.h"
+#include "semslam/core/InputError.h"
 #include "semslam/io/LineReader.h"
 #include "semslam/io/convert/ConversionCommon.h"
 #include "semslam/models/VelocityModel3.h"

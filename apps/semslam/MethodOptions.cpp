@@ -1,0 +1,65 @@
+#include "MethodOptions.h"
+
+#include <map>
+
+namespace semslam::cli {
+
+void addSemanticSlamOptions(CLI::App* command, SemanticSlamOptions& options) {
+  command->add_option("--gate", options.gateConfidence, "chi-square gate confidence (paper B: 0.9)")
+      ->check(CLI::Range(1e-9, 1.0 - 1e-12))
+      ->capture_default_str();
+  command->add_option("--null-weight", options.nullWeight, "mm-nh: null-hypothesis weight")
+      ->check(CLI::Range(1e-9, 1.0 - 1e-9))
+      ->capture_default_str();
+  command->add_option("--null-sigma-scale", options.nullSigmaScale,
+                      "mm-nh: null hypothesis's standard deviations over the detection's")
+      ->check(CLI::Range(1.0, 1e9))
+      ->capture_default_str();
+  command->add_option("--em-window", options.emWindow, "gpda: steps each E-step re-weights")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
+  command->add_option("--em-iterations", options.emIterations, "gpda: E/M rounds per step")
+      ->check(CLI::Range(0, 1000))
+      ->capture_default_str();
+  command->add_flag("--no-warm-start{false}", options.warmStart,
+                    "mm, mm-nh: choose mixture components at the odometry prediction (docs/max-mixtures.md)");
+}
+
+void addHybridOptions(CLI::App* command, HybridOptions& options) {
+  const std::map<std::string, WeightMethod> weights{
+      {"sampled", WeightMethod::Sampled}, {"importance", WeightMethod::Importance}, {"analytic", WeightMethod::Analytic}};
+  const std::map<std::string, Branching> branching{{"whole", Branching::WholeAssociation},
+                                                   {"one-at-a-time", Branching::OneDetectionAtATime}};
+  command->add_option("--samples", options.samples, "hybrid: samples per weight (A, eq. 16)")
+      ->check(CLI::Range(2, 100000000))
+      ->capture_default_str();
+  command
+      ->add_option("--weights", options.weights,
+                   "hybrid: sampled (A, eq. 16-17, plain Monte Carlo), importance (linearised-posterior proposal) or "
+                   "analytic (linearised)")
+      ->transform(CLI::CheckedTransformer(weights))
+      ->default_str("sampled");
+  command->add_option("--importance-iterations", options.importanceIterations,
+                      "hybrid: importance weights' proposal linearisations (1: at the mean; > 1: iterated)")
+      ->check(CLI::Range(1, 100))
+      ->capture_default_str();
+  command->add_option("--prune-ratio", options.pruneRatio, "hybrid: prune w < w_max / ratio (<= 1: no pruning)")
+      ->capture_default_str();
+  command->add_option("--gate-ratio", options.gateRatio,
+                      "hybrid: skip sampling when the linearised weight < w_max / ratio (<= 1: no gate)")
+      ->capture_default_str();
+  command->add_option("--branching", options.branching, "hybrid: whole (every association of a step) or one-at-a-time")
+      ->transform(CLI::CheckedTransformer(branching))
+      ->default_str("whole");
+  command->add_option("--joint-compatibility", options.jointCompatibility,
+                      "hybrid one-at-a-time: chi-square confidence of the joint compatibility test")
+      ->check(CLI::Range(1e-9, 1.0 - 1e-12))
+      ->capture_default_str();
+  command->add_option("--max-components", options.maxComponents, "hybrid: keep at most N components (0: no cap)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  command->add_flag("--no-visibility{false}", options.visibility,
+                    "hybrid: sampled weights without the visibility model");
+}
+
+}  // namespace semslam::cli

@@ -1,0 +1,45 @@
+#pragma once
+// What a method reports at the end of a run, in the types every layer above the estimators shares: the estimators
+// (slam/, hybrid/) fill a RunResult, eval/RunEvaluation.h scores it, io/RunFolder.h writes it, run/ drives all
+// three. A method leaves a member empty when it does not produce it.
+
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "semslam/geometry/Matrix.h"
+#include "semslam/models/HypothesisComponent.h"
+#include "semslam/models/MeasurementLog.h"
+
+namespace semslam {
+
+/// A landmark as a method estimates it.
+struct EstimatedLandmark {
+  int id = 0;                          ///< the method's own id (what associations refer to)
+  LandmarkState state = Point2(0.0, 0.0);
+  Vector classProbabilities;           ///< P(c) for c = 0..M−1; empty when the method estimates no class
+};
+
+/// One row of a run folder's associations.csv: what a method decided for one detection.
+struct AssociationRecord {
+  int step = 0;
+  int detection = 0;
+  std::optional<int> landmark;   // nullopt: the null hypothesis
+  double weight = 1.0;
+  std::optional<int> truth;      // a landmark id, kNotALandmark for clutter, nullopt when unknown
+};
+
+/// What a method reports at the end of a run. Leave a member empty when the method does not produce it.
+struct RunResult {
+  std::string method;
+  std::vector<Pose> poses;                                     ///< final estimate of each step's pose
+  std::vector<Matrix> poseCovariances;                         ///< marginal covariance of each pose (tangent)
+  std::vector<std::vector<std::optional<int>>> associations;   ///< [step][detection]: landmark id or null hypothesis
+  std::vector<EstimatedLandmark> landmarks;
+  std::vector<HypothesisComponent> components;                 ///< hybrid belief at the last step
+  std::vector<double> heaviestAssociationWeights;              ///< hybrid: max_β P(β | H_k), one per step
+  double timeSeconds = std::numeric_limits<double>::quiet_NaN();
+};
+
+}  // namespace semslam

@@ -1,0 +1,113 @@
+#include "semslam/run/RunMethod.h"
+
+#include <chrono>
+#include <filesystem>
+
+#include "semslam/io/HypothesesJsonl.h"
+#include "semslam/io/RunMetricsFile.h"
+#include "semslam/io/RunOutputFromResult.h"
+
+namespace semslam {
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// Paper B: the pipeline over every step, the final estimate, and each detection's chosen landmark.
+void runSemanticSlam(const MeasurementLog& log, const MethodOptions& options, const RunProgress& progress,
+                     MethodRun& run) {
+  SemanticSlamOptions slamOptions = options.slam;
+  slamOptions.strategy = associationStrategy(options.method);
+  if (options.smoother) slamOptions.smoother = smootherFactory(*options.smoother);
+
+  const auto start = std::chrono::steady_clock::now();
+  SemanticSlam slam(log.header, slamOptions);
+  const int steps = static_cast<int>(log.steps.size());
+  for (int k = 0; k < steps; ++k) {
+    slam.addStep(log.steps[k]);
+    if (progress) progress(k + 1, steps);
+  }
+  slam.finish();
+  run.result = slam.result(options.poseCovariances);
+  run.result.timeSeconds = secondsSince(start);
+  run.factors = slam.smoother().factors().size();
+  run.evaluation = evaluateRun(log, run.result);
+  if (!options.runFolder) return;
+  std::vector<AssociationRecord> associations;
+  for (const DetectionRecord& record : slam.detections()) {
+    const auto [landmark, weight] = slam.chosenAssociation(record);
+    if (slamOptions.strategy == AssociationStrategy::Known && !landmark) continue;  // clutter: no factor
+    associations.push_back({record.step, record.detection, landmark, weight, record.truth});
+  }
+  run.output = runOutputFrom(log, run.result, std::move(associations));
+}
+
+/// Paper A: every detection of the heaviest final component's history, weighted by that history's association
+/// marginal P(β_1:k | H_k) (A, eq. 8).
+std::vector<AssociationRecord> hybridAssociationRecords(const MeasurementLog& log, const HybridRunOutput& hybrid) {
+  const RunResult& result = hybrid.result;
+  double historyWeight = 1.0;
+  if (!hybrid.steps.empty() && !result.components.empty()) {
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < result.components.size(); ++i) {
+      if (result.components[i].weight > result.components[best].weight) best = i;
+    }
+    for (const AssociationHypothesis& a : hybrid.steps.back().marginals.association) {
+      if (a.associations == result.components[best].associations) historyWeight = a.weight;
+    }
+  }
+  std::vector<AssociationRecord> records;
+  for (std::size_t k = 0; k < result.associations.size(); ++k) {
+    for (std::size_t i = 0; i < result.associations[k].size(); ++i) {
+      records.push_back({static_cast<int>(k), static_cast<int>(i), result.associations[k][i], historyWeight,
+                         log.steps[k].detections[i].truthId});
+    }
+  }
+  return records;
+}
+
+/// Paper A: the hybrid belief over every step; the final estimate is its heaviest component (HybridRun.h).
+void runHybridBelief(const MeasurementLog& log, const MethodOptions& options, const RunProgress& progress,
+                     MethodRun& run) {
+  HybridOptions hybridOptions = options.hybrid;
+  hybridOptions.useSemantics = options.method == Method::Hybrid;
+  if (options.smoother == SmootherKind::Incremental) {
+    hybridOptions.smootherFactory = smootherFactory(SmootherKind::Incremental);
+  }
+  HybridRunOutput hybrid = runHybrid(log, hybridOptions, progress);
+  run.evaluation = evaluateRun(log, hybrid.result);
+  if (options.runFolder) {
+    for (std::size_t k = 0; k < hybrid.steps.size(); ++k) {
+      run.hybridStepMetrics.push_back(evaluateHypotheses(hybrid.steps[k].marginals.components, log.steps[k].truePose));
+    }
+    run.output = runOutputFrom(log, hybrid.result, hybridAssociationRecords(log, hybrid));
+  }
+  run.result = std::move(hybrid.result);
+  run.hybridSteps = std::move(hybrid.steps);
+}
+
+}  // namespace
+
+MethodRun runMethod(const MeasurementLog& log, const MethodOptions& options, const RunProgress& progress) {
+  MethodRun run;
+  run.method = options.method;
+  if (isHybrid(options.method)) {
+    runHybridBelief(log, options, progress, run);
+  } else {
+    runSemanticSlam(log, options, progress, run);
+  }
+  return run;
+}
+
+void writeMethodRun(const std::string& directory, const MethodRun& run) {
+  std::filesystem::create_directories(directory);
+  const std::filesystem::path dir(directory);
+  writeRunFolder(directory, run.output);
+  writeRunMetrics((dir / "metrics.json").string(), run.evaluation.metrics);
+  if (isHybrid(run.method)) {
+    writeHypothesesJsonl((dir / "hypotheses.jsonl").string(), run.hybridSteps, run.hybridStepMetrics);
+  }
+}
+
+}  // namespace semslam

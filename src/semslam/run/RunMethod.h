@@ -1,0 +1,68 @@
+#pragma once
+// RunMethod: where a run happens. runMethod drives one estimation method of either paper over a whole measurement
+// log, scores its final estimate against the log's truth (eval/RunEvaluation.h) and builds its run folder
+// (io/RunFolder.h); writeMethodRun writes that folder. Every caller — `semslam run`, `semslam demo`, the studies
+// (study/), the benchmarks — goes through these two functions, so a run is driven, scored and written the same
+// way for every method.
+//
+//   known | ml | gpda | mm | mm-nh   paper B's pipeline (slam/SemanticSlam.h) with `options.slam`; its
+//                                    strategy is the method's. Back end: the incremental smoother.
+//   hybrid | hybrid-geometric        paper A's hybrid belief (hybrid/HybridRun.h) with `options.hybrid`;
+//                                    useSemantics is the method's. Back end: batch Levenberg-Marquardt.
+// `options.smoother`, when set, replaces the method's back end.
+//
+// The run folder (`output`, written by writeMethodRun): metrics.json (io/RunMetricsFile.h), trajectory.tum,
+// truth.tum, landmarks.csv, landmarks_truth.csv, covariances.csv, associations.csv (io/RunFolder.h), and for the
+// hybrid methods hypotheses.jsonl (io/HypothesesJsonl.h: every step's belief and its metrics). An association's
+// weight is the method's own: paper B's normalised association probability of the chosen landmark, paper A's
+// association marginal P(β_1:k | H_k) (A, eq. 8) of the heaviest component's history.
+//
+// result.timeSeconds is the estimator's wall time: scoring and building the folder are excluded.
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "semslam/eval/HypothesisMetrics.h"
+#include "semslam/eval/RunEvaluation.h"
+#include "semslam/hybrid/HybridOptions.h"
+#include "semslam/hybrid/HybridRun.h"
+#include "semslam/io/RunFolder.h"
+#include "semslam/run/Method.h"
+#include "semslam/slam/SemanticSlam.h"
+#include "semslam/solve/SmootherFactory.h"
+
+namespace semslam {
+
+struct MethodOptions {
+  Method method = Method::MaxMixtureNullHypothesis;
+  std::optional<SmootherKind> smoother;  ///< empty: the method's default back end (above)
+  SemanticSlamOptions slam;              ///< paper B's methods (`strategy` and `smoother` are set from the above)
+  HybridOptions hybrid;                  ///< paper A's methods (`useSemantics` is set from the method)
+  bool poseCovariances = true;           ///< paper B: the marginal covariance of every pose (NEES, ellipses)
+  bool runFolder = true;                 ///< build `output` (and, for hybrid, every step's metrics)
+};
+
+struct MethodRun {
+  Method method = Method::MaxMixtureNullHypothesis;
+  RunResult result;          ///< the final estimate
+  RunEvaluation evaluation;  ///< scored against the log's truth
+  RunOutput output;          ///< the run folder's contents (when options.runFolder)
+  std::size_t factors = 0;   ///< paper B: factors in the final graph
+  std::vector<HybridStepRecord> hybridSteps;       ///< paper A: what the belief said and did at every step
+  std::vector<HypothesisMetrics> hybridStepMetrics;///< paper A: eval's metrics of each step's belief (runFolder)
+};
+
+/// Progress callback: (steps done, steps in all).
+using RunProgress = std::function<void(int, int)>;
+
+/// Runs `options.method` over `log`. Throws InputError for a log the method cannot take, std::invalid_argument for
+/// options it cannot take.
+MethodRun runMethod(const MeasurementLog& log, const MethodOptions& options, const RunProgress& progress = {});
+
+/// Writes run.output, metrics.json and (hybrid) hypotheses.jsonl into `directory` (created if needed).
+void writeMethodRun(const std::string& directory, const MethodRun& run);
+
+}  // namespace semslam
