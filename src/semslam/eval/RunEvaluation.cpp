@@ -52,6 +52,15 @@ void setDataAssociationMetrics(RunMetrics& metrics, const DataAssociationAccurac
   metrics.daClutter = asCount(accuracy.clutter);
 }
 
+void setAssociationErrorMetrics(RunMetrics& metrics, const AssociationErrors& errors) {
+  metrics.daAccuracyReal = errors.accuracyReal;
+  metrics.pairwisePrecision = errors.pairwisePrecision;
+  metrics.pairwiseRecall = errors.pairwiseRecall;
+  metrics.clutterRejected = errors.clutterRejected;
+  metrics.landmarksMerged = asCount(errors.landmarksMerged);
+  metrics.landmarksSplit = asCount(errors.landmarksSplit);
+}
+
 void setLandmarkMetrics(RunMetrics& metrics, const LandmarkMetrics& landmarks) {
   metrics.landmarksEstimated = asCount(landmarks.estimated);
   metrics.landmarksTrue = asCount(landmarks.truth);
@@ -150,6 +159,8 @@ RunEvaluation evaluateRun(const MeasurementLog& log, const RunResult& result, co
     if (!pairs.empty()) {
       evaluation.dataAssociation = evaluateDataAssociation(pairs);
       setDataAssociationMetrics(metrics, *evaluation.dataAssociation);
+      evaluation.associationErrors = evaluateAssociationErrors(pairs, evaluation.dataAssociation->matching);
+      setAssociationErrorMetrics(metrics, *evaluation.associationErrors);
     }
   }
 

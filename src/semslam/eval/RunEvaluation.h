@@ -10,7 +10,8 @@
 //                taken without alignment and "alignment" says "none".
 //   association  result.associations (per step, per detection: the estimated landmark id the final estimate uses,
 //                or std::nullopt for the null hypothesis; a detection that created a landmark names it) against the
-//                detections' truth ids, on the detections that have one (DataAssociationAccuracy.h).
+//                detections' truth ids, on the detections that have one (DataAssociationAccuracy.h), and the
+//                errors by kind through the same matching (AssociationErrors.h).
 //   landmarks    landmarks_estimated = result.landmarks.size(). landmarks_true = the true landmarks the method
 //                could know: those detected at least once plus those given to it as priors (header
 //                landmarkPriors), when the log has detection truth; else the header's landmark truth count.
@@ -27,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "semslam/eval/AssociationErrors.h"
 #include "semslam/eval/DataAssociationAccuracy.h"
 #include "semslam/eval/HypothesisMetrics.h"
 #include "semslam/eval/LandmarkMetrics.h"
@@ -49,6 +51,7 @@ struct RunEvaluation {
   RunMetrics metrics;
   std::optional<TrajectoryErrors> trajectory;
   std::optional<DataAssociationAccuracy> dataAssociation;
+  std::optional<AssociationErrors> associationErrors;
   std::optional<LandmarkMetrics> landmarks;
   std::optional<NeesSummary> nees;
   std::optional<HypothesisMetrics> hypotheses;
@@ -61,6 +64,7 @@ RunEvaluation evaluateRun(const MeasurementLog& log, const RunResult& result, co
 // Copying one group of results into RunMetrics (evaluateRun uses these; so can a caller with its own pipeline).
 void setTrajectoryMetrics(RunMetrics& metrics, const TrajectoryErrors& errors);
 void setDataAssociationMetrics(RunMetrics& metrics, const DataAssociationAccuracy& accuracy);
+void setAssociationErrorMetrics(RunMetrics& metrics, const AssociationErrors& errors);
 void setLandmarkMetrics(RunMetrics& metrics, const LandmarkMetrics& landmarks);
 void setNeesMetrics(RunMetrics& metrics, const NeesSummary& nees);
 void setHypothesisMetrics(RunMetrics& metrics, const HypothesisMetrics& hypotheses);

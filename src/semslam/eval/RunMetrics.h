@@ -31,6 +31,11 @@ struct RunMetrics {
   // Data association (DataAssociationAccuracy.h).
   double daAccuracy = kNotApplicable;
   std::optional<long long> daCorrect, daTotal, daNull, daClutter;
+  // Association errors by kind (AssociationErrors.h).
+  double daAccuracyReal = kNotApplicable;
+  double pairwisePrecision = kNotApplicable, pairwiseRecall = kNotApplicable;
+  double clutterRejected = kNotApplicable;
+  std::optional<long long> landmarksMerged, landmarksSplit;
 
   // Landmarks (LandmarkMetrics.h).
   std::optional<long long> landmarksEstimated, landmarksTrue, landmarkCountError, landmarksMatched;

@@ -1,0 +1,67 @@
+#pragma once
+// Association errors, separated by kind: what a single accuracy number mixes. All are measured over the same
+// detections and the same estimated ↔ true landmark matching as DataAssociationAccuracy.h (LandmarkMatching.h), on
+// the detections with known truth. A detection is *real* when its truth is a landmark, *clutter* when its truth is
+// kNotALandmark; it is *assigned* when the final estimate puts it on a landmark (a detection on the null
+// hypothesis, on a provisional landmark the method dropped, or rejected, is unassigned: the method reports
+// std::nullopt for it).
+//
+//   accuracy_real       (real detections whose estimate the matching pairs with their truth) / (real detections).
+//                       An unassigned real detection counts as wrong. NaN without real detections.
+//                       Example: truths [a a b b], estimates [1 1 1 ∅]; matching 1↔a: 2 correct of 4 → 0.5.
+//   pairwise precision  over the unordered pairs of ASSIGNED real detections:
+//                         (pairs on the same estimate AND of the same truth) / (pairs on the same estimate);
+//                       1 when no two detections of different landmarks share an estimate (no merge).
+//   pairwise recall       (pairs on the same estimate AND of the same truth) / (pairs of the same truth);
+//                       1 when every landmark's assigned detections sit on one estimate (no split).
+//                       Unassigned detections form no pairs; NaN when the denominator is 0.
+//                       Example: truths [a a b], estimates [1 1 1]: same-estimate pairs 3, same-truth pairs 1,
+//                       both 1 → precision 1/3, recall 1.
+//   clutter_rejected    (clutter detections left unassigned) / (clutter detections); NaN without clutter.
+//   landmarks_merged    true landmarks t with at least 2, and at least 10 %, of their detections on an estimate
+//                       that the matching gives to ANOTHER true landmark (t was merged into it).
+//   landmarks_split     true landmarks t with at least 2, and at least 10 %, of their detections on an estimate
+//                       that the matching gives to NO true landmark (a second estimate of t).
+//                       Examples: truths [a a a b b] on estimates [1 1 1 1 1]: the matching gives 1 to a (3
+//                       shared), b has 2 of 2 detections on a's estimate → merged = 1. Truths [a a a a a] on
+//                       estimates [1 1 1 2 2]: 1 ↔ a, 2 is matched to nothing, a has 2 of 5 on it → split = 1.
+// The 10 % share is of all the landmark's real detections (assigned or not).
+
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+#include "semslam/eval/LandmarkMatching.h"
+
+namespace semslam {
+
+struct AssociationErrors {
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+  double accuracyReal = kNaN;
+  std::size_t realCorrect = 0;
+  std::size_t realTotal = 0;
+
+  double pairwisePrecision = kNaN;
+  double pairwiseRecall = kNaN;
+  std::size_t pairsSameEstimate = 0;   ///< pairs of assigned real detections on one estimate
+  std::size_t pairsSameTruth = 0;      ///< pairs of assigned real detections of one true landmark
+  std::size_t pairsBoth = 0;           ///< pairs that are both
+
+  double clutterRejected = kNaN;
+  std::size_t clutter = 0;
+  std::size_t clutterUnassigned = 0;
+
+  std::size_t landmarksMerged = 0;
+  std::size_t landmarksSplit = 0;
+};
+
+/// The share of a landmark's detections above which a merge or split counts (with at least kMinimumDetections).
+inline constexpr double kMergeSplitShare = 0.1;
+inline constexpr std::size_t kMergeSplitMinimumDetections = 2;
+
+/// Evaluates `detections` through `matching` (matchLandmarks(detections)).
+AssociationErrors evaluateAssociationErrors(const std::vector<DetectionAssociation>& detections,
+                                            const LandmarkMatching& matching);
+
+}  // namespace semslam

@@ -1,0 +1,137 @@
+// Association errors by kind (AssociationErrors.h): the header's worked examples, each kind of error alone, clutter
+// both ways, and invariance under renaming the estimated landmarks.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <optional>
+#include <random>
+#include <vector>
+
+#include "semslam/eval/AssociationErrors.h"
+
+namespace semslam {
+namespace {
+
+constexpr int kClutter = kNotALandmark;
+constexpr int a = 0, b = 1, c = 2;
+
+std::vector<DetectionAssociation> make(const std::vector<std::pair<int, std::optional<int>>>& list) {
+  std::vector<DetectionAssociation> out;
+  for (const auto& [truth, estimate] : list) out.push_back({truth, estimate});
+  return out;
+}
+
+AssociationErrors evaluate(const std::vector<DetectionAssociation>& d) {
+  return evaluateAssociationErrors(d, matchLandmarks(d));
+}
+
+TEST(AssociationErrors, PerfectAssociationHasNoErrorOfAnyKind) {
+  const auto e = evaluate(make({{a, 7}, {a, 7}, {b, 3}, {b, 3}, {c, 5}, {kClutter, std::nullopt}}));
+  EXPECT_EQ(e.accuracyReal, 1.0);
+  EXPECT_EQ(e.pairwisePrecision, 1.0);
+  EXPECT_EQ(e.pairwiseRecall, 1.0);
+  EXPECT_EQ(e.clutterRejected, 1.0);
+  EXPECT_EQ(e.landmarksMerged, 0u);
+  EXPECT_EQ(e.landmarksSplit, 0u);
+}
+
+TEST(AssociationErrors, HeaderExampleAccuracyRealCountsTheNullHypothesisAsWrong) {
+  const auto e = evaluate(make({{a, 1}, {a, 1}, {b, 1}, {b, std::nullopt}}));
+  EXPECT_EQ(e.realTotal, 4u);
+  EXPECT_EQ(e.realCorrect, 2u);
+  EXPECT_DOUBLE_EQ(e.accuracyReal, 0.5);
+}
+
+TEST(AssociationErrors, HeaderExamplePairwisePrecisionSeesAMergeRecallDoesNot) {
+  const auto e = evaluate(make({{a, 1}, {a, 1}, {b, 1}}));
+  EXPECT_EQ(e.pairsSameEstimate, 3u);
+  EXPECT_EQ(e.pairsSameTruth, 1u);
+  EXPECT_EQ(e.pairsBoth, 1u);
+  EXPECT_DOUBLE_EQ(e.pairwisePrecision, 1.0 / 3.0);
+  EXPECT_DOUBLE_EQ(e.pairwiseRecall, 1.0);
+}
+
+TEST(AssociationErrors, ASplitLowersRecallNotPrecision) {
+  // a on two estimates (3 + 2): same-truth pairs C(5,2) = 10, same-estimate pairs 3 + 1 = 4, all of one truth.
+  const auto e = evaluate(make({{a, 1}, {a, 1}, {a, 1}, {a, 2}, {a, 2}}));
+  EXPECT_DOUBLE_EQ(e.pairwisePrecision, 1.0);
+  EXPECT_DOUBLE_EQ(e.pairwiseRecall, 4.0 / 10.0);
+  EXPECT_EQ(e.landmarksSplit, 1u);  // header example: 2 of 5 on an estimate matched to nothing
+  EXPECT_EQ(e.landmarksMerged, 0u);
+}
+
+TEST(AssociationErrors, HeaderExampleMergeCountsTheLandmarkThatLostItsEstimate) {
+  const auto e = evaluate(make({{a, 1}, {a, 1}, {a, 1}, {b, 1}, {b, 1}}));
+  EXPECT_EQ(e.landmarksMerged, 1u);
+  EXPECT_EQ(e.landmarksSplit, 0u);
+}
+
+TEST(AssociationErrors, OneStrayDetectionOrUnderTenPercentIsNeitherMergeNorSplit) {
+  // One detection of b on a's estimate: below the minimum of 2.
+  const auto once = evaluate(make({{a, 1}, {a, 1}, {b, 1}, {b, 2}, {b, 2}}));
+  EXPECT_EQ(once.landmarksMerged, 0u);
+  // 2 of 25 detections of a on a second estimate: 8 % < 10 %.
+  std::vector<std::pair<int, std::optional<int>>> list(23, {a, 1});
+  list.push_back({a, 2});
+  list.push_back({a, 2});
+  EXPECT_EQ(evaluate(make(list)).landmarksSplit, 0u);
+  // 3 of 25: 12 % ≥ 10 %.
+  list.push_back({a, 2});
+  EXPECT_EQ(evaluate(make(list)).landmarksSplit, 1u);
+}
+
+TEST(AssociationErrors, UnassignedDetectionsFormNoPairsButCountInTheShare) {
+  // a: 2 detections on b's estimate, 18 on the null hypothesis: 10 % of 20 → merged; no pair of a is assigned
+  // twice on its own estimate.
+  std::vector<std::pair<int, std::optional<int>>> list(18, {a, std::nullopt});
+  list.push_back({a, 9});
+  list.push_back({a, 9});
+  for (int i = 0; i < 5; ++i) list.push_back({b, 9});
+  const auto e = evaluate(make(list));
+  EXPECT_EQ(e.landmarksMerged, 1u);
+  EXPECT_EQ(e.pairsSameTruth, 1u + 10u);     // C(2,2) for a, C(5,2) for b
+  EXPECT_EQ(e.pairsSameEstimate, 21u);       // C(7,2)
+  EXPECT_NEAR(e.accuracyReal, 5.0 / 25.0, 1e-15);
+}
+
+TEST(AssociationErrors, ClutterRejectedIsTheShareOfClutterOnNoLandmark) {
+  const auto e = evaluate(make({{a, 1}, {kClutter, std::nullopt}, {kClutter, 1}, {kClutter, 4}, {kClutter, std::nullopt}}));
+  EXPECT_EQ(e.clutter, 4u);
+  EXPECT_EQ(e.clutterUnassigned, 2u);
+  EXPECT_DOUBLE_EQ(e.clutterRejected, 0.5);
+  EXPECT_EQ(e.realTotal, 1u);          // clutter is not in accuracy_real
+  EXPECT_EQ(e.accuracyReal, 1.0);
+}
+
+TEST(AssociationErrors, UndefinedRatiosAreNaN) {
+  const auto onlyClutter = evaluate(make({{kClutter, std::nullopt}}));
+  EXPECT_TRUE(std::isnan(onlyClutter.accuracyReal));
+  EXPECT_TRUE(std::isnan(onlyClutter.pairwisePrecision));
+  const auto noClutter = evaluate(make({{a, 1}}));
+  EXPECT_TRUE(std::isnan(noClutter.clutterRejected));
+  EXPECT_TRUE(std::isnan(noClutter.pairwiseRecall));  // one detection: no pair
+}
+
+TEST(AssociationErrors, RenamingTheEstimatesChangesNothing) {
+  std::mt19937 rng(4);
+  std::uniform_int_distribution<int> truth(-1, 5), estimate(-1, 7);
+  for (int trial = 0; trial < 50; ++trial) {
+    std::vector<DetectionAssociation> d, renamed;
+    for (int i = 0; i < 40; ++i) {
+      const int t = truth(rng), e = estimate(rng);
+      const std::optional<int> est = e < 0 ? std::nullopt : std::optional<int>(e);
+      d.push_back({t, est});
+      renamed.push_back({t, est ? std::optional<int>(100 + 7 * *est) : std::nullopt});
+    }
+    const AssociationErrors x = evaluate(d), y = evaluate(renamed);
+    EXPECT_EQ(x.realCorrect, y.realCorrect);
+    EXPECT_EQ(x.pairsBoth, y.pairsBoth);
+    EXPECT_EQ(x.pairsSameEstimate, y.pairsSameEstimate);
+    EXPECT_EQ(x.landmarksMerged, y.landmarksMerged);
+    EXPECT_EQ(x.landmarksSplit, y.landmarksSplit);
+  }
+}
+
+}  // namespace
+}  // namespace semslam
