@@ -21,6 +21,16 @@ void addSemanticSlamOptions(CLI::App* command, SemanticSlamOptions& options) {
   command->add_option("--em-iterations", options.emIterations, "gpda: E/M rounds per step")
       ->check(CLI::Range(0, 1000))
       ->capture_default_str();
+  command->add_option("--birth", options.birth,
+                      "how unmatched detections start landmarks: threshold (paper B: no landmark passes the gate) or "
+                      "unassigned (an unassigned hypothesis, joint assignment; docs/association-front-end.md)")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, BirthRule>{{"threshold", BirthRule::Threshold},
+                                                                           {"unassigned", BirthRule::Unassigned}}))
+      ->default_str("threshold");
+  command->add_option("--unassigned-rate", options.unassignedRate,
+                      "birth unassigned: expected unassigned detections (births + clutter) per step")
+      ->check(CLI::Range(1e-9, 1e9))
+      ->capture_default_str();
   command->add_flag("--no-warm-start{false}", options.warmStart,
                     "mm, mm-nh: choose mixture components at the odometry prediction (docs/max-mixtures.md)");
 }

@@ -11,7 +11,8 @@
 
 namespace semslam::cli {
 
-/// Paper B's pipeline: --gate, --null-weight, --null-sigma-scale, --em-window, --em-iterations, --no-warm-start.
+/// Paper B's pipeline: --gate, --null-weight, --null-sigma-scale, --em-window, --em-iterations, --birth,
+/// --unassigned-rate, --no-warm-start.
 void addSemanticSlamOptions(CLI::App* command, SemanticSlamOptions& options);
 
 /// Paper A's hybrid belief: --samples, --weights, --importance-iterations, --prune-ratio, --gate-ratio, --branching,

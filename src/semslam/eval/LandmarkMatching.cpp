@@ -5,7 +5,7 @@
 #include <string>
 #include <utility>
 
-#include "semslam/eval/HungarianAssignment.h"
+#include "semslam/solve/HungarianAssignment.h"
 #include "semslam/core/InputError.h"
 #include "semslam/models/MeasurementLog.h"
 

@@ -8,6 +8,7 @@
 
 #include "semslam/association/MarginalLikelihood.h"
 #include "semslam/factors/MaxMixtureFactor.h"
+#include "semslam/solve/HungarianAssignment.h"
 
 namespace semslam {
 namespace {
@@ -51,13 +52,39 @@ LandmarkState toLandmarkState(const Value& value) {
       value);
 }
 
+/// Weight of a forbidden pair in the joint assignment: far below any log-likelihood the step can produce, finite
+/// (the Hungarian solver takes finite weights only). Every row keeps its own unassigned column, so an optimal
+/// assignment never needs a forbidden pair.
+double forbiddenWeight(const std::vector<double>& allowed) {
+  double spread = 1.0;
+  for (double w : allowed) spread += std::abs(w);
+  return -1e3 * spread;
+}
+
 }  // namespace
+
+BirthRule parseBirthRule(const std::string& name) {
+  if (name == "threshold") return BirthRule::Threshold;
+  if (name == "unassigned") return BirthRule::Unassigned;
+  throw std::invalid_argument("unknown birth rule \"" + name + "\" (threshold, unassigned)");
+}
+
+std::string birthRuleName(BirthRule rule) { return rule == BirthRule::Threshold ? "threshold" : "unassigned"; }
+
+int SemanticSlam::bestCandidate(const DetectionRecord& record) {
+  if (record.assigned) {
+    const auto found = std::find(record.candidates.begin(), record.candidates.end(), *record.assigned);
+    if (found != record.candidates.end()) return static_cast<int>(found - record.candidates.begin());
+  }
+  return argmax(record.weights);
+}
 
 SemanticSlam::SemanticSlam(const LogHeader& header, SemanticSlamOptions options)
     : header_(header),
       options_(std::move(options)),
       factory_(header),
       gate_(options_.gateConfidence),
+      unassigned_(header, options_.unassignedRate),
       smoother_(options_.smoother ? options_.smoother() : smootherFactory(SmootherKind::Incremental)()) {
   if (!(options_.nullWeight > 0.0 && options_.nullWeight < 1.0)) {
     throw std::invalid_argument("null-hypothesis weight must be in (0, 1)");
@@ -129,14 +156,29 @@ void SemanticSlam::addStep(const TimeStep& step) {
   Values values = newValues;
   const int landmarksBeforeStep = landmarks();
   std::vector<std::size_t> factorsOfRecord;  // how many of `associations` each of this step's records added
+  const std::size_t first = records_.size();
   for (std::size_t i = 0; i < step.detections.size(); ++i) {
-    const std::size_t factorsBefore = associations.size();
     DetectionRecord record;
     record.step = k;
     record.detection = static_cast<int>(i);
     record.measurement = step.detections[i];
     record.truth = step.detections[i].truthId;
     record.semanticLikelihoods = semanticLikelihoods(header_, step.detections[i]);
+    records_.push_back(std::move(record));
+  }
+  const bool jointly = !known && options_.birth == BirthRule::Unassigned;
+  if (jointly) {
+    // (docs/association-front-end.md, §1-4): every candidate of the step against the marginal from before it,
+    // then one joint assignment with the unassigned hypothesis.
+    for (const Detection& detection : step.detections) unassigned_.observe(detection);
+    for (std::size_t r = first; r < records_.size(); ++r) {
+      findCandidatesWithUnassigned(marginal ? &*marginal : nullptr, landmarksBeforeStep, records_[r]);
+    }
+    assignJointly(first);
+  }
+  for (std::size_t r = first; r < records_.size(); ++r) {
+    DetectionRecord& record = records_[r];
+    const std::size_t factorsBefore = associations.size();
     const Value& robot = values.exists(pose) ? values.value(pose) : smoother_->estimate().value(pose);
 
     if (known) {
@@ -150,7 +192,7 @@ void SemanticSlam::addStep(const TimeStep& step) {
         landmarks_[index].classBelief.update(record.semanticLikelihoods);
       }
     } else {
-      if (marginal) findCandidates(*marginal, landmarksBeforeStep, record);
+      if (!jointly && marginal) findCandidates(*marginal, landmarksBeforeStep, record);
       if (record.candidates.empty()) {
         const int index = addLandmark(factory_.initialLandmark(record.measurement, robot), std::nullopt, values);
         record.createdLandmark = index;
@@ -161,7 +203,7 @@ void SemanticSlam::addStep(const TimeStep& step) {
         if (record.mixture && options_.warmStart) {
           // Warm start: this solve uses the most likely candidate under a Cauchy kernel (an outlier pulls little);
           // the mixture replaces it below.
-          const int best = record.candidates[argmax(record.weights)];
+          const int best = record.candidates[bestCandidate(record)];
           associations.add(factory_.detectionFactor(pose, landmarks_[best].key, record.measurement, 1.0,
                                                     std::make_shared<CauchyKernel>(kWarmStartCauchyScale)));
         } else {
@@ -173,7 +215,6 @@ void SemanticSlam::addStep(const TimeStep& step) {
       }
     }
     factorsOfRecord.push_back(associations.size() - factorsBefore);
-    records_.push_back(std::move(record));
   }
 
   // 4. Solve, and remember which smoother factors belong to which detection (they follow any propagation ones).
@@ -216,6 +257,88 @@ void SemanticSlam::findCandidates(const JointMarginal& marginal, int landmarkCou
   if (!record.candidates.empty()) record.weights = normalizeLogWeights(logWeights);
 }
 
+void SemanticSlam::findCandidatesWithUnassigned(const JointMarginal* marginal, int landmarkCount,
+                                                DetectionRecord& record) const {
+  // P₀(s): the label's predictive under the uniform class prior (1 without semantics).
+  const double labelPrior = record.semanticLikelihoods.size() > 0 ? record.semanticLikelihoods.mean() : 1.0;
+  record.unassignedLogLikelihood = unassigned_.logDensity(record.measurement) + std::log(labelPrior);  // (§1)
+  if (!marginal) return;
+  const Key pose = poseKeys_.back();
+  const Values& estimate = smoother_->estimate();
+  for (int j = 0; j < landmarkCount; ++j) {
+    const Landmark& landmark = landmarks_[j];
+    const double semantic = landmark.classBelief.predictive(record.semanticLikelihoods);
+    if (!(semantic > 0.0)) continue;  // a label this landmark's class belief rules out
+    const std::vector<FactorPtr> factor = {factory_.detectionFactor(pose, landmark.key, record.measurement)};
+    const LinearizedLikelihood geometric =
+        linearizedLikelihood(factor, estimate, marginal->restrictedTo({pose, landmark.key}));
+    // The joint gate (§3): g = d² − 2 ln(P(s | j) / P₀(s)) against the χ²_m quantile.
+    const double jointStatistic = geometric.innovationChi2 - 2.0 * std::log(semantic / labelPrior);
+    if (jointStatistic > gate_.threshold(geometric.dimension)) continue;
+    record.candidates.push_back(j);
+    record.logLikelihoods.push_back(geometric.logLikelihood + std::log(semantic));
+  }
+  if (!record.candidates.empty()) record.weights = normalizeLogWeights(record.logLikelihoods);
+}
+
+void SemanticSlam::assignJointly(std::size_t first) {
+  // (§4) Rows: the step's detections. Columns: every landmark some detection gated, then one unassigned column per
+  // detection, open to that detection only. Weights: log-likelihoods; the maximum-weight assignment is the most
+  // likely joint association with at most one detection per landmark.
+  const std::size_t rows = records_.size() - first;
+  std::vector<int> columnLandmark;
+  std::map<int, int> columnOf;
+  std::vector<double> allowed;
+  for (std::size_t r = first; r < records_.size(); ++r) {
+    for (int j : records_[r].candidates) {
+      if (columnOf.emplace(j, static_cast<int>(columnLandmark.size())).second) columnLandmark.push_back(j);
+    }
+    allowed.insert(allowed.end(), records_[r].logLikelihoods.begin(), records_[r].logLikelihoods.end());
+    allowed.push_back(records_[r].unassignedLogLikelihood);
+  }
+  const int landmarkColumns = static_cast<int>(columnLandmark.size());
+  Matrix weights = Matrix::Constant(static_cast<Eigen::Index>(rows), landmarkColumns + static_cast<Eigen::Index>(rows),
+                                    forbiddenWeight(allowed));
+  for (std::size_t i = 0; i < rows; ++i) {
+    const DetectionRecord& record = records_[first + i];
+    for (std::size_t c = 0; c < record.candidates.size(); ++c) {
+      weights(static_cast<Eigen::Index>(i), columnOf.at(record.candidates[c])) = record.logLikelihoods[c];
+    }
+    weights(static_cast<Eigen::Index>(i), landmarkColumns + static_cast<Eigen::Index>(i)) = record.unassignedLogLikelihood;
+  }
+  const Assignment assignment = maximumWeightAssignment(weights);
+  std::vector<int> assignedLandmark(rows, -1);
+  for (std::size_t i = 0; i < rows; ++i) {
+    const int column = assignment.rowToColumn[i];
+    if (column >= 0 && column < landmarkColumns) assignedLandmark[i] = columnLandmark[column];
+  }
+  // Exclusion: a detection's remaining candidates are those no other detection of the step was assigned.
+  for (std::size_t i = 0; i < rows; ++i) {
+    DetectionRecord& record = records_[first + i];
+    if (assignedLandmark[i] < 0) {
+      record.candidates.clear();  // unassigned: it starts a landmark (provisional rules: §5, to come)
+      record.logLikelihoods.clear();
+      record.weights.clear();
+      continue;
+    }
+    record.assigned = assignedLandmark[i];
+    std::vector<int> candidates;
+    std::vector<double> logLikelihoods;
+    for (std::size_t c = 0; c < record.candidates.size(); ++c) {
+      const int j = record.candidates[c];
+      const bool takenByAnother = j != assignedLandmark[i] &&
+                                  std::find(assignedLandmark.begin(), assignedLandmark.end(), j) != assignedLandmark.end();
+      const bool single = options_.strategy == AssociationStrategy::MaximumLikelihood && j != assignedLandmark[i];
+      if (takenByAnother || single) continue;
+      candidates.push_back(j);
+      logLikelihoods.push_back(record.logLikelihoods[c]);
+    }
+    record.candidates = std::move(candidates);
+    record.logLikelihoods = std::move(logLikelihoods);
+    record.weights = normalizeLogWeights(record.logLikelihoods);
+  }
+}
+
 FactorPtr SemanticSlam::gpdaFactor(const DetectionRecord& record, int landmark, double weight) const {
   // Information scaled by the weight: standard deviations divided by √w.
   return factory_.detectionFactor(poseKeys_[record.step], landmarks_[landmark].key, record.measurement,
@@ -224,7 +347,7 @@ FactorPtr SemanticSlam::gpdaFactor(const DetectionRecord& record, int landmark, 
 
 std::vector<FactorPtr> SemanticSlam::associationFactors(DetectionRecord& record) const {
   const Key pose = poseKeys_[record.step];
-  const int best = record.candidates[argmax(record.weights)];
+  const int best = record.candidates[bestCandidate(record)];
   switch (options_.strategy) {
     case AssociationStrategy::MaximumLikelihood:
       return {factory_.detectionFactor(pose, landmarks_[best].key, record.measurement)};
@@ -309,7 +432,7 @@ std::pair<std::optional<int>, double> SemanticSlam::chosenAssociation(const Dete
     const double scale = options_.strategy == AssociationStrategy::MaxMixtureNullHypothesis ? 1.0 - options_.nullWeight : 1.0;
     return {record.candidates[active], record.weights[active] * scale};
   }
-  const int best = argmax(record.weights);
+  const int best = bestCandidate(record);
   return {record.candidates[best], record.weights[best]};
 }
 

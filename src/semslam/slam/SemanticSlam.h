@@ -31,19 +31,34 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "semslam/association/AssociationGate.h"
 #include "semslam/association/ClassBelief.h"
 #include "semslam/association/MeasurementFactory.h"
+#include "semslam/association/UnassignedHypothesis.h"
 #include "semslam/models/RunResult.h"
 #include "semslam/slam/AssociationStrategy.h"
 #include "semslam/solve/SmootherFactory.h"
 
 namespace semslam {
 
+/// How a detection that matches no mapped landmark starts one (docs/association-front-end.md).
+enum class BirthRule {
+  Threshold,   ///< paper B: a landmark starts when no landmark passes the geometric gate
+  Unassigned,  ///< every detection also has the unassigned hypothesis (UnassignedHypothesis.h); the step's
+               ///< detections are assigned jointly, one per landmark (Hungarian), under the joint gate
+};
+
+/// "threshold" | "unassigned"; anything else throws std::invalid_argument.
+BirthRule parseBirthRule(const std::string& name);
+std::string birthRuleName(BirthRule rule);
+
 struct SemanticSlamOptions {
   AssociationStrategy strategy = AssociationStrategy::MaxMixtureNullHypothesis;
+  BirthRule birth = BirthRule::Threshold;
+  double unassignedRate = UnassignedHypothesis::kDefaultRate;  ///< μ: unassigned detections expected per step
   double gateConfidence = AssociationGate::kDefaultConfidence;
   double nullWeight = 0.1;        ///< mm-nh: weight of the null hypothesis (B, sec. IV-C)
   double nullSigmaScale = 100.0;  ///< mm-nh: the null hypothesis's standard deviations over the detection's
@@ -68,6 +83,9 @@ struct DetectionRecord {
   std::vector<FactorIndex> factors;     ///< the smoother's factors this detection added
   FactorPtr mixture;                    ///< mm, mm-nh: the max-mixture factor
   Vector semanticLikelihoods;           ///< (P(z_sem | c))_c
+  std::vector<double> logLikelihoods;   ///< BirthRule::Unassigned: ln p(z | candidate), geometric × semantic
+  double unassignedLogLikelihood = 0.0; ///< BirthRule::Unassigned: ln p(z | unassigned)
+  std::optional<int> assigned;          ///< BirthRule::Unassigned: the joint assignment's landmark (none: new)
 };
 
 class SemanticSlam {
@@ -96,12 +114,20 @@ class SemanticSlam {
     ClassBelief classBelief;
   };
 
+  /// The index (into record.candidates) of the candidate the detection's plain factor and warm start use: the
+  /// joint assignment's landmark where there is one, else the most likely candidate.
+  static int bestCandidate(const DetectionRecord& record);
   void addFirstPose(FactorGraph& factors, Values& values);
   int addLandmark(const Value& value, std::optional<int> truthId, Values& values);
   /// Candidates and their normalised weights for `detection` at the current estimate (step 2).
   /// Landmarks created during this step are not candidates (the marginal predates them; a landmark produces at
   /// most one detection per step).
   void findCandidates(const JointMarginal& marginal, int landmarkCount, DetectionRecord& record) const;
+  /// BirthRule::Unassigned: candidates under the joint gate with their likelihoods and the unassigned hypothesis's
+  /// (docs/association-front-end.md, §1-3).
+  void findCandidatesWithUnassigned(const JointMarginal* marginal, int landmarkCount, DetectionRecord& record) const;
+  /// BirthRule::Unassigned: the step's records (from `first`) assigned jointly, one detection per landmark (§4).
+  void assignJointly(std::size_t first);
   /// The factors of one detection with candidates under the strategy (step 3).
   std::vector<FactorPtr> associationFactors(DetectionRecord& record) const;
   FactorPtr gpdaFactor(const DetectionRecord& record, int landmark, double weight) const;
@@ -113,6 +139,7 @@ class SemanticSlam {
   SemanticSlamOptions options_;
   MeasurementFactory factory_;
   AssociationGate gate_;
+  UnassignedHypothesis unassigned_;
   std::unique_ptr<Smoother> smoother_;
   std::vector<Key> poseKeys_;
   std::vector<Landmark> landmarks_;

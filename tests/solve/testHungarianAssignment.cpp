@@ -9,7 +9,7 @@
 #include <numeric>
 #include <random>
 
-#include "semslam/eval/HungarianAssignment.h"
+#include "semslam/solve/HungarianAssignment.h"
 #include "semslam/core/InputError.h"
 
 namespace semslam {

@@ -1,4 +1,4 @@
-#include "semslam/eval/HungarianAssignment.h"
+#include "semslam/solve/HungarianAssignment.h"
 
 #include <algorithm>
 #include <cmath>

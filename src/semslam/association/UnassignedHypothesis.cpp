@@ -1,0 +1,102 @@
+#include "semslam/association/UnassignedHypothesis.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace semslam {
+namespace {
+
+constexpr double kMinimumRange = 1e-3;  // m: a detection at the sensor has no bearing
+
+}  // namespace
+
+UnassignedHypothesis::UnassignedHypothesis(const LogHeader& header, double rate)
+    : kind_(header.sensor.kind),
+      dimension_(header.dimension),
+      rate_(rate),
+      specRange_(header.sensor.maxRange),
+      specFieldOfView_(header.sensor.fieldOfView) {
+  if (!(rate > 0.0) || !std::isfinite(rate)) throw std::invalid_argument("unassigned rate must be positive and finite");
+}
+
+UnassignedHypothesis::Polar UnassignedHypothesis::polarOf(const Detection& detection) const {
+  const Vector& g = detection.geometry;
+  Polar p;
+  switch (kind_) {
+    case SensorKind::RangeBearing:
+      p.range = g(0);
+      p.bearing = g(1);
+      break;
+    case SensorKind::RangeBearingElevation:
+      p.range = g(0);
+      p.bearing = g(1);
+      p.elevation = g(2);
+      break;
+    case SensorKind::RelativePosition:
+    case SensorKind::RelativePose: {
+      const int n = dimension_;  // the position part: x, y[, z]
+      p.range = g.head(n).norm();
+      p.bearing = std::atan2(g(1), g(0));
+      if (n == 3) p.elevation = std::atan2(g(2), g.head(2).norm());
+      break;
+    }
+  }
+  p.range = std::max(std::abs(p.range), kMinimumRange);
+  return p;
+}
+
+void UnassignedHypothesis::observe(const Detection& detection) {
+  const Polar p = polarOf(detection);
+  observedRange_ = std::max(observedRange_, p.range);
+  observedBearing_ = std::max(observedBearing_, std::abs(p.bearing));
+  observedElevation_ = std::max(observedElevation_, std::abs(p.elevation));
+  observedAny_ = true;
+}
+
+double UnassignedHypothesis::maxRange() const { return specRange_ > 0.0 ? specRange_ : observedRange_; }
+
+double UnassignedHypothesis::bearingSpan() const {
+  if (specFieldOfView_ > 0.0) return std::min(specFieldOfView_, 2.0 * std::numbers::pi);
+  return std::min(2.0 * observedBearing_, 2.0 * std::numbers::pi);
+}
+
+double UnassignedHypothesis::elevationSpan() const { return std::min(2.0 * observedElevation_, std::numbers::pi); }
+
+double UnassignedHypothesis::logDensity(const Detection& detection) const {
+  if (!observedAny_ && !(specRange_ > 0.0 && specFieldOfView_ > 0.0)) {
+    throw std::logic_error("unassigned hypothesis: the sensor field is unknown before the first detection");
+  }
+  // Spans of zero (every detection dead ahead so far) are widened to a minimal opening so V > 0.
+  const double rMax = std::max(maxRange(), kMinimumRange);
+  const double phi = std::max(bearingSpan(), 1e-3);
+  const Polar p = polarOf(detection);
+  double logVolume = 0.0, logJacobian = 0.0;
+  if (dimension_ == 2) {
+    logVolume = std::log(phi) + 2.0 * std::log(rMax) - std::log(2.0);
+  } else {
+    const double psi = std::max(elevationSpan(), 1e-3);
+    logVolume = 3.0 * std::log(rMax) - std::log(3.0) + std::log(phi) + std::log(2.0 * std::sin(psi / 2.0));
+  }
+  switch (kind_) {
+    case SensorKind::RangeBearing: logJacobian = std::log(p.range); break;
+    case SensorKind::RangeBearingElevation:
+      logJacobian = 2.0 * std::log(p.range) + std::log(std::max(std::cos(p.elevation), 1e-12));
+      break;
+    case SensorKind::RelativePosition: break;
+    case SensorKind::RelativePose:
+      logJacobian = dimension_ == 2 ? -std::log(2.0 * std::numbers::pi)
+                                    : -std::log(8.0 * std::numbers::pi * std::numbers::pi);
+      break;
+  }
+  return std::log(rate_) - logVolume + logJacobian;
+}
+
+double switchDistanceSquared(double logDensity, int measurementDimension, double logDeterminantS,
+                             double logLabelPredictiveRatio) {
+  return -2.0 * (logDensity + 0.5 * measurementDimension * std::log(2.0 * std::numbers::pi) + 0.5 * logDeterminantS -
+                 logLabelPredictiveRatio);
+}
+
+}  // namespace semslam

@@ -1,0 +1,65 @@
+#pragma once
+// UnassignedHypothesis: the likelihood that a detection comes from no mapped landmark — a landmark not yet in the
+// map (birth) or nothing static (clutter) — as a density in the detection's measurement space, the same space and
+// units as the normaliser of MarginalLikelihood.h (docs/association-front-end.md, §1):
+//
+//   p(z | unassigned) = λ(z_g) · P₀(s),   λ = ρ · J(z_g),   ρ = μ / V,
+//
+//   μ      expected unassigned detections (births + clutter) per step (`rate`, default 1);
+//   V      the sensor field's area (2D) or volume (3D) in the world: a sector of radius r_max and opening Φ,
+//          V = Φ r_max² / 2; in 3D a spherical sector, V = (r_max³ / 3) · Φ · 2 sin(Ψ / 2) with Ψ the elevation span;
+//   J      the Jacobian of the back-projection, since births are uniform in the world, not in the sensor's
+//          coordinates: range-bearing r (per m·rad), range-bearing-elevation r² cos φ (per m·rad²), relative
+//          position 1 (per m² or m³); a relative pose adds a uniform orientation (÷ 2π in 2D, ÷ 8π² in 3D);
+//   P₀(s)  the label's predictive under the uniform class prior, Σ_c P(s | c) / M (1 without semantics).
+//
+// r_max, Φ (and Ψ) are the sensor specification's (maxRange, fieldOfView) where it gives them; where it does not,
+// the largest range and the bearing (elevation) span of the detections seen so far (observe()), i.e. from the
+// data, online, never a per-log constant. Until a detection has been observed the field is undefined and
+// logDensity throws std::logic_error. Ranges below 1 mm count as 1 mm (a detection at the sensor has no bearing).
+//
+// The switch point (§2): a landmark with predicted measurement ẑ and innovation covariance S beats this
+// hypothesis exactly when d² = (z − ẑ)ᵀ S⁻¹ (z − ẑ) < d*², d*² = −2 ln(λ (2π)^{m/2} |S|^{1/2} P₀(s) / P(s | j)).
+
+#include "semslam/models/MeasurementLog.h"
+
+namespace semslam {
+
+class UnassignedHypothesis {
+ public:
+  static constexpr double kDefaultRate = 1.0;
+
+  /// Throws std::invalid_argument for a rate that is not positive and finite.
+  UnassignedHypothesis(const LogHeader& header, double rate = kDefaultRate);
+
+  /// Widens the data-defined extents (range, bearing, elevation) by one detection's geometry.
+  void observe(const Detection& detection);
+
+  /// ln λ(z_g) of a detection's geometry (not its label).
+  double logDensity(const Detection& detection) const;
+
+  /// The field's extents in use: r_max, Φ and (3D) Ψ.
+  double maxRange() const;
+  double bearingSpan() const;
+  double elevationSpan() const;
+
+ private:
+  struct Polar {
+    double range = 0.0, bearing = 0.0, elevation = 0.0;
+  };
+  Polar polarOf(const Detection& detection) const;
+
+  SensorKind kind_;
+  int dimension_;
+  double rate_;
+  double specRange_, specFieldOfView_;
+  double observedRange_ = 0.0, observedBearing_ = 0.0, observedElevation_ = 0.0;  // largest |.| seen
+  bool observedAny_ = false;
+};
+
+/// d*², the squared Mahalanobis distance below which a landmark beats the unassigned hypothesis (see above):
+/// −2 (logDensity + (m/2) ln 2π + ½ ln|S| + ln P₀(s) − ln P(s | j)). Negative: the unassigned hypothesis always wins.
+double switchDistanceSquared(double logDensity, int measurementDimension, double logDeterminantS,
+                             double logLabelPredictiveRatio = 0.0);
+
+}  // namespace semslam

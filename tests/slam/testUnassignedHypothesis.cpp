@@ -1,0 +1,135 @@
+// The unassigned hypothesis and the joint assignment of paper B's front end (docs/association-front-end.md):
+// its density against the closed form, the switch point d*(S, λ) through the whole front end, and exclusion (two
+// detections of one step never share a landmark).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "semslam/association/UnassignedHypothesis.h"
+#include "semslam/slam/SemanticSlam.h"
+#include "support/GaussianDensity.h"
+
+namespace semslam {
+namespace {
+
+using test::logGaussian;
+
+/// A robot at a known pose, one mapped landmark at (3, 1) with covariance 0.09 I, a relative-position sensor of
+/// range 10 m and opening π; every covariance isotropic, so the innovation covariance is S = 0.39 I (as in
+/// testSemanticSlamRuns' closed-form case: 0.25 pose + 0.01 odometry + 0.09 landmark + 0.04 detection).
+struct OneLandmark {
+  MeasurementLog log;
+  SE2 robot{0.5, -0.3, 0.4};
+  Point2 landmark{3.0, 1.0};
+  double s = 0.39;
+
+  OneLandmark() {
+    log.header.sensor.kind = SensorKind::RelativePosition;
+    log.header.sensor.maxRange = 10.0;
+    log.header.sensor.fieldOfView = std::numbers::pi;
+    log.header.initialPose = PosePrior{robot, Vector3(0.25, 0.25, 1e-8).asDiagonal().toDenseMatrix()};
+    log.header.landmarkPriors.push_back({0, landmark, 0.09 * Matrix::Identity(2, 2)});
+  }
+
+  Vector2 predicted() const { return robot.rotation().matrix().transpose() * (landmark - robot.translation()); }
+
+  Detection detectionAt(const Vector2& geometry) const {
+    Detection d;
+    d.geometry = geometry;
+    d.covariance = 0.04 * Matrix::Identity(2, 2);
+    return d;
+  }
+
+  /// Runs two steps, the second with `detections`, and returns the front end.
+  SemanticSlam run(const std::vector<Detection>& detections, AssociationStrategy strategy) const {
+    SemanticSlamOptions options;
+    options.strategy = strategy;
+    options.birth = BirthRule::Unassigned;
+    SemanticSlam slam(log.header, options);
+    slam.addStep(TimeStep{0.0, std::nullopt, {}, robot});
+    slam.addStep(TimeStep{1.0, Odometry{SE2(), Vector3(0.01, 0.01, 1e-8).asDiagonal().toDenseMatrix()}, detections,
+                          robot});
+    return slam;
+  }
+};
+
+TEST(UnassignedHypothesis, DensityIsTheRateOverTheFieldAreaForARelativePositionSensor) {
+  OneLandmark setup;
+  const UnassignedHypothesis unassigned(setup.log.header, 2.0);
+  // V = Φ r_max² / 2 = π · 100 / 2; λ = μ / V, the same everywhere for a Cartesian measurement.
+  const double expected = std::log(2.0 / (std::numbers::pi * 100.0 / 2.0));
+  EXPECT_NEAR(unassigned.logDensity(setup.detectionAt(Vector2(1.0, 2.0))), expected, 1e-12);
+  EXPECT_NEAR(unassigned.logDensity(setup.detectionAt(Vector2(7.0, -1.0))), expected, 1e-12);
+}
+
+TEST(UnassignedHypothesis, RangeBearingDensityIsTheCartesianDensityTimesTheRange) {
+  LogHeader header;
+  header.sensor.kind = SensorKind::RangeBearing;
+  UnassignedHypothesis unassigned(header);
+  Detection far, near;
+  far.geometry = Vector2(4.0, 0.3);
+  near.geometry = Vector2(1.0, -0.5);
+  unassigned.observe(far);
+  unassigned.observe(near);
+  EXPECT_DOUBLE_EQ(unassigned.maxRange(), 4.0);
+  EXPECT_DOUBLE_EQ(unassigned.bearingSpan(), 1.0);  // 2 · max |bearing|, from the data
+  const double cartesian = 1.0 / (1.0 * 16.0 / 2.0);
+  EXPECT_NEAR(unassigned.logDensity(near), std::log(cartesian * 1.0), 1e-12);
+  EXPECT_NEAR(unassigned.logDensity(far), std::log(cartesian * 4.0), 1e-12);
+}
+
+TEST(UnassignedHypothesis, TheSwitchDistanceIsWhereTheGaussianEqualsTheDensity) {
+  const Matrix2 S = (Matrix2() << 0.5, 0.1, 0.1, 0.3).finished();
+  const double logLambda = std::log(0.01);
+  const double d2 = switchDistanceSquared(logLambda, 2, std::log(S.determinant()));
+  ASSERT_GT(d2, 0.0);
+  // A point at Mahalanobis distance d* along any direction has density λ.
+  const Vector2 direction = Vector2(0.6, -0.8);
+  const double scale = std::sqrt(d2 / direction.dot(S.inverse() * direction));
+  EXPECT_NEAR(logGaussian(Vector2(scale * direction), Vector2::Zero(), S), logLambda, 1e-12);
+  // A label the landmark explains twice as well as the prior moves the switch out by 2 ln 2.
+  EXPECT_NEAR(switchDistanceSquared(logLambda, 2, std::log(S.determinant()), std::log(2.0)), d2 + 2.0 * std::log(2.0),
+              1e-12);
+}
+
+TEST(UnassignedHypothesis, TheFrontEndSwitchesFromTheLandmarkToANewOneAtTheClosedFormDistance) {
+  const OneLandmark setup;
+  const UnassignedHypothesis unassigned(setup.log.header);
+  const double logLambda = unassigned.logDensity(setup.detectionAt(setup.predicted()));
+  const double dStar = std::sqrt(switchDistanceSquared(logLambda, 2, 2.0 * std::log(setup.s)));
+  const Vector2 direction = Vector2(1.0, 1.0).normalized();
+  for (double factor : {0.5, 0.97, 1.03, 1.5}) {
+    const Vector2 z = setup.predicted() + factor * dStar * std::sqrt(setup.s) * direction;
+    const SemanticSlam slam = setup.run({setup.detectionAt(z)}, AssociationStrategy::MaximumLikelihood);
+    const DetectionRecord& record = slam.detections().at(0);
+    if (factor < 1.0) {
+      EXPECT_EQ(record.assigned, std::optional<int>(0)) << "at " << factor << " d*";
+      EXPECT_EQ(slam.landmarks(), 1);
+    } else {
+      EXPECT_FALSE(record.assigned) << "at " << factor << " d*";
+      EXPECT_TRUE(record.createdLandmark);
+      EXPECT_EQ(slam.landmarks(), 2);
+    }
+  }
+}
+
+TEST(UnassignedHypothesis, TwoDetectionsOfOneStepNeverShareALandmark) {
+  const OneLandmark setup;
+  const Detection a = setup.detectionAt(setup.predicted() + Vector2(0.05, 0.0));
+  const Detection b = setup.detectionAt(setup.predicted() - Vector2(0.0, 0.05));
+  for (AssociationStrategy strategy : {AssociationStrategy::MaximumLikelihood, AssociationStrategy::Gpda,
+                                       AssociationStrategy::MaxMixture, AssociationStrategy::MaxMixtureNullHypothesis}) {
+    SemanticSlam slam = setup.run({a, b}, strategy);
+    slam.finish();
+    const RunResult result = slam.result(false);
+    ASSERT_EQ(result.associations.at(1).size(), 2u);
+    const std::optional<int> first = result.associations[1][0], second = result.associations[1][1];
+    EXPECT_TRUE(!first || !second || *first != *second) << strategyName(strategy);
+    EXPECT_EQ(slam.landmarks(), 2) << strategyName(strategy);  // the second detection started a landmark
+  }
+}
+
+}  // namespace
+}  // namespace semslam
