@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,13 @@ void addConvertCommand(CLI::App& app) {
       ->add_option("--misclassification", arguments->options.misclassification,
                    "categorical model's misclassification rate p of the sampled labels")
       ->capture_default_str();
+  command
+      ->add_option("--clutter-labels", arguments->options.clutterLabels,
+                   "labels of clutter: uniform (no information) or per-source (one class per known source, e.g. "
+                   "MRCLAM's robots, misclassified at the same rate)")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, ClutterLabels>{
+          {"uniform", ClutterLabels::Uniform}, {"per-source", ClutterLabels::PerSource}}))
+      ->default_str("uniform");
   command->add_option("--seed", arguments->options.seed, "seed of the label draws")->capture_default_str();
   command
       ->add_option("--keyframe-period", arguments->options.keyframePeriod,

@@ -99,6 +99,43 @@ TEST(MrclamConverter, EveryMeasurementIsKeptAndClutterIsNotALandmark) {
   EXPECT_EQ(back.steps.size(), log.steps.size());
 }
 
+TEST(MrclamConverter, PerSourceClutterLabelsNameEachRobotConsistentlyAndLeaveLandmarkLabelsAlone) {
+  SEMSLAM_REQUIRE_DATA(folder, kFolder);
+  ConvertOptions options;
+  options.classes = 3;
+  options.misclassification = 0.0;  // exact labels: every sighting of robot s is labelled s mod 3
+  const MeasurementLog uniform = convertMrclam(folder.string(), options);
+  options.clutterLabels = ClutterLabels::PerSource;
+  const MeasurementLog perSource = convertMrclam(folder.string(), options);
+  std::map<int, std::set<int>> labelsOfRobot;
+  std::size_t sightings = 0;
+  for (std::size_t k = 0; k < perSource.steps.size(); ++k) {
+    for (std::size_t i = 0; i < perSource.steps[k].detections.size(); ++i) {
+      const Detection& d = perSource.steps[k].detections[i];
+      if (d.clutterSource) {
+        ++sightings;
+        EXPECT_GE(*d.clutterSource, 1);
+        EXPECT_LE(*d.clutterSource, 5);
+        labelsOfRobot[*d.clutterSource].insert(*d.label);
+      } else {
+        EXPECT_EQ(d.label, uniform.steps[k].detections[i].label);  // same draws for everything else
+      }
+    }
+  }
+  EXPECT_EQ(sightings, 407u);  // robot 1 of Dataset 6: 407 sightings of other robots (SOURCE.txt)
+  for (const auto& [robot, labels] : labelsOfRobot) {
+    EXPECT_EQ(labels, std::set<int>{robot % 3}) << "robot " << robot;
+  }
+  TempDir dir;
+  MeasurementLog back;
+  test::writeAndReadBack(perSource, dir, "per-source.jsonl", &back);
+  std::size_t sourcesBack = 0;
+  for (const TimeStep& step : back.steps) {
+    for (const Detection& d : step.detections) sourcesBack += d.clutterSource ? 1 : 0;
+  }
+  EXPECT_EQ(sourcesBack, 407u);
+}
+
 TEST(MrclamConverter, StepsSplitTheOdometryAtMeasurementStamps) {
   SEMSLAM_REQUIRE_DATA(folder, kFolder);
   const MeasurementLog log = convertMrclam(folder.string(), ConvertOptions{});

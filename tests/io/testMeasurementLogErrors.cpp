@@ -232,7 +232,7 @@ TEST(MeasurementLogErrors, Steps) {
       {"detection_missing_geometry", [](Json&, auto& s) { s[1]["detections"][0].erase("geometry"); }, 3,
        "detections[0]: missing field 'geometry'"},
       {"detection_typo", [](Json&, auto& s) { s[1]["detections"][0]["lable"] = 1; }, 3,
-       "detections[0]: unknown field 'lable' (accepted: geometry, covariance, label, truth)"},
+       "detections[0]: unknown field 'lable' (accepted: geometry, covariance, label, truth, clutter_source)"},
       {"geometry_length", [](Json&, auto& s) { s[1]["detections"][1]["geometry"] = {3.0, 1.0, 0.0}; }, 3,
        "detections[1].geometry: expected 2 numbers [range, bearing], found 3"},
       {"geometry_range", [](Json&, auto& s) { s[1]["detections"][1]["geometry"][0] = -3.0; }, 3,
@@ -259,6 +259,12 @@ TEST(MeasurementLogErrors, Steps) {
        "detections[0].truth: integer -1 is out of range"},
       {"truth_null", [](Json&, auto& s) { s[1]["detections"][0]["truth"] = nullptr; }, 3,
        "detections[0].truth: expected a landmark id or \"not-a-landmark\", found null"},
+      {"clutter_source_on_a_landmark", [](Json&, auto& s) { s[1]["detections"][0]["clutter_source"] = 2; }, 3,
+       "detections[0].clutter_source: a clutter source needs \"truth\": \"not-a-landmark\""},
+      {"clutter_source_negative", [](Json&, auto& s) {
+         s[1]["detections"][0]["truth"] = "not-a-landmark";
+         s[1]["detections"][0]["clutter_source"] = -3;
+       }, 3, "detections[0].clutter_source: integer -3 is out of range"},
       {"step_not_object", [](Json&, auto& s) { s[2] = Json::array(); }, 4, "expected an object, found an array of 0"},
   });
 }

@@ -468,9 +468,9 @@ Detection StepParser::parseDetection(const JsonField& field) const {
     }
   }
   if (semanticKey) {
-    field.requireObject({"geometry", "covariance", semanticKey}, {"truth"});
+    field.requireObject({"geometry", "covariance", semanticKey}, {"truth", "clutter_source"});
   } else {
-    field.requireObject({"geometry", "covariance"}, {"truth"});
+    field.requireObject({"geometry", "covariance"}, {"truth", "clutter_source"});
   }
 
   Detection detection;
@@ -548,6 +548,11 @@ Detection StepParser::parseDetection(const JsonField& field) const {
       detection.truthId = id;
     }
   }
+  if (field.has("clutter_source")) {
+    const JsonField source = field["clutter_source"];
+    if (detection.truthId != kNotALandmark) source.fail("a clutter source needs \"truth\": \"not-a-landmark\"");
+    detection.clutterSource = static_cast<int>(source.integer(0, INT_MAX));
+  }
   return detection;
 }
 
@@ -607,6 +612,7 @@ Json stepToJson(const TimeStep& step, SemanticKind semantic) {
     if (detection.truthId) {
       if (*detection.truthId == kNotALandmark) {
         item["truth"] = "not-a-landmark";
+        if (detection.clutterSource) item["clutter_source"] = *detection.clutterSource;
       } else {
         item["truth"] = *detection.truthId;
       }

@@ -101,6 +101,8 @@ struct Detection {
   std::optional<int> label;        // SemanticKind::Label
   std::optional<Vector> classVector;  // SemanticKind::Probabilities or Scores (length classes)
   std::optional<int> truthId;      // a landmark id, kNotALandmark for clutter, or absent when unknown
+  std::optional<int> clutterSource;  // clutter only: which non-landmark object produced it, where the dataset
+                                     // knows (e.g. MRCLAM's other robots), ≥ 0; ground truth, never method input
 };
 
 struct TimeStep {

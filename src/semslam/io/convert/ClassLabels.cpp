@@ -15,7 +15,14 @@ int classOfLandmark(int id, int classes) {
   return id % classes;
 }
 
-void assignClassLabels(MeasurementLog& log, int classes, double misclassification, std::uint32_t seed) {
+ClutterLabels parseClutterLabels(const std::string& name) {
+  if (name == "uniform") return ClutterLabels::Uniform;
+  if (name == "per-source") return ClutterLabels::PerSource;
+  throw std::invalid_argument("unknown clutter labels \"" + name + "\" (uniform, per-source)");
+}
+
+void assignClassLabels(MeasurementLog& log, int classes, double misclassification, std::uint32_t seed,
+                       ClutterLabels clutterLabels) {
   if (classes < 1) throw std::invalid_argument("assignClassLabels: classes must be at least 1");
   if (!(misclassification >= 0.0 && misclassification < 1.0)) {
     throw std::invalid_argument("assignClassLabels: the misclassification rate must be in [0, 1)");
@@ -50,6 +57,8 @@ void assignClassLabels(MeasurementLog& log, int classes, double misclassificatio
       detection.classVector.reset();
       if (detection.truthId && *detection.truthId >= 0) {
         detection.label = model.sampleLabel(classOfLandmark(*detection.truthId, classes), rng);
+      } else if (clutterLabels == ClutterLabels::PerSource && detection.clutterSource) {
+        detection.label = model.sampleLabel(*detection.clutterSource % classes, rng);
       } else if (!detection.truthId || *detection.truthId == kNotALandmark) {
         const int label = static_cast<int>(uniform01(rng) * classes);
         detection.label = label < classes ? label : classes - 1;

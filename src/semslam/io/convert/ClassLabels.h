@@ -7,8 +7,12 @@
 // a step in detection order; every draw consumes exactly two engine outputs (Sampling.h's uniform01), so the same
 // seed gives the same labels on every platform and a log's first N steps get the same labels whatever follows them.
 //   - a detection of landmark l:            label ~ row (l mod M) of C = (1 − p) I + p/(M − 1)(11ᵀ − I);
-//   - clutter (truth "not a landmark") or a detection of unknown truth: label uniform on [0, M) (clutter has no
-//     class: a uniform label carries no information about it, as a null hypothesis expects).
+//   - clutter (truth "not a landmark") or a detection of unknown truth, ClutterLabels::Uniform: label uniform on
+//     [0, M) (clutter has no class: a uniform label carries no information about it, as a null hypothesis expects);
+//   - clutter with a known source s (Detection::clutterSource), ClutterLabels::PerSource: label ~ row (s mod M) of
+//     C, as a real detector labels a robot it sees: one class per object, wrong at rate p. Clutter without a source
+//     stays uniform. Either way one label costs two engine outputs, so the landmarks' labels do not depend on the
+//     choice.
 // With M = 1 the header becomes semantic "none" and classifier "none" (one class is no information), and no
 // detection carries a label. In both cases every landmark of the ground truth gets class (id mod M).
 //
@@ -16,6 +20,7 @@
 // kNotALandmark.
 
 #include <cstdint>
+#include <string>
 
 #include "semslam/models/MeasurementLog.h"
 
@@ -24,7 +29,14 @@ namespace semslam {
 /// The class of landmark `id` among `classes`: id mod M.
 int classOfLandmark(int id, int classes);
 
+/// How clutter is labelled (above).
+enum class ClutterLabels { Uniform, PerSource };
+
+/// "uniform" | "per-source"; anything else throws std::invalid_argument.
+ClutterLabels parseClutterLabels(const std::string& name);
+
 /// Sets the header's classes, semantic kind and classifier, the ground truth's classes and every detection's label.
-void assignClassLabels(MeasurementLog& log, int classes, double misclassification, std::uint32_t seed);
+void assignClassLabels(MeasurementLog& log, int classes, double misclassification, std::uint32_t seed,
+                       ClutterLabels clutterLabels = ClutterLabels::Uniform);
 
 }  // namespace semslam

@@ -100,7 +100,7 @@ MeasurementLog finishConversion(MeasurementLog raw, const ConvertOptions& option
   counts.detectionsDroppedByMaxSteps = keepFirstSteps(log.steps, options.maxSteps);
   counts.stepsDroppedByMaxSteps = before - log.steps.size();
 
-  assignClassLabels(log, options.classes, options.misclassification, options.seed);
+  assignClassLabels(log, options.classes, options.misclassification, options.seed, options.clutterLabels);
 
   // Priors.
   const int tangent = dimension == 3 ? 6 : 3;

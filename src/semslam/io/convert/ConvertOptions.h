@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "semslam/io/convert/ClassLabels.h"
+
 namespace semslam {
 
 struct ConvertOptions {
@@ -24,6 +26,8 @@ struct ConvertOptions {
   int classes = 1;
   /// p, the categorical model's misclassification rate, in [0, 1); must be 0 when classes is 1.
   double misclassification = 0.0;
+  /// How clutter detections are labelled (ClassLabels.h): uniform, or one class per known source.
+  ClutterLabels clutterLabels = ClutterLabels::Uniform;
   /// Seeds the std::mt19937 that draws the labels (and nothing else).
   std::uint32_t seed = 1;
   /// Keep one step per period (seconds); 0 keeps every step.

@@ -126,6 +126,7 @@ MeasurementLog convertMrclam(const std::string& folder, const ConvertOptions& op
       ++unknownBarcodes;
     } else if (landmarks.count(subject->second) == 0) {
       detection.truthId = kNotALandmark;
+      detection.clutterSource = subject->second;  // the robot seen (subjects 1-5)
       ++robotSightings;
     } else {
       detection.truthId = subject->second;
