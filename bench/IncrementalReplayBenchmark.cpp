@@ -23,6 +23,7 @@
 
 #include "Datasets.h"
 #include "semslam/io/PoseGraphReplay.h"
+#include "semslam/run/PoseGraphReplayLoop.h"
 #include "semslam/solve/BatchSmoother.h"
 #include "semslam/solve/IncrementalSmoother.h"
 
@@ -32,7 +33,7 @@ using namespace semslam;
 using Clock = std::chrono::steady_clock;
 
 double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-double cpuSeconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
+double cpuSeconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }  // the batch solve's CPU time
 
 struct ReplayTimes {
   double total = 0.0;  // wall, s: the sum of the step times
@@ -44,36 +45,27 @@ struct ReplayTimes {
   double checkpointGap = 0.0;  // largest relative chi2 excess over a batch solve of the graph so far
 };
 
-/// Replays `replay` into `smoother`, timing each step (update + newest-pose read). With `checkpoints`, at 1/4, 1/2
-/// and 3/4 of the replay (untimed) compares the estimate with a batch Gauss-Newton solve of the graph so far.
+/// Replays `replay` into `smoother` through the library's replay loop (run/PoseGraphReplayLoop.h). With
+/// `checkpoints`, at 1/4, 1/2 and 3/4 of the replay (untimed) compares the estimate with a batch Gauss-Newton solve
+/// of the graph so far.
 template <class Smoother>
 ReplayTimes replayAll(const PoseGraphReplay& replay, Smoother& smoother, double budget, bool checkpoints) {
   ReplayTimes times;
-  double checksum = 0.0;
   const std::size_t n = replay.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    const auto stepStart = Clock::now();
-    const double cpuStart = cpuSeconds();
-    const ReplayStep step = replay.step(k, smoother.estimate());
-    smoother.update(step.factors, step.values);
-    checksum += dimension(smoother.estimate().value(step.pose));  // the newest pose, as a front end reads it
-    const double seconds = since(stepStart);
-    times.cpu += cpuSeconds() - cpuStart;
-    times.total += seconds;
-    times.worst = std::max(times.worst, seconds);
-    ++times.steps;
-    if (checkpoints && (k + 1 == n / 4 || k + 1 == n / 2 || k + 1 == (3 * n) / 4)) {
-      const FactorGraph graph = smoother.factors();
-      const double chi2 = graph.chi2(smoother.estimate());
-      const double optimum = optimize(graph, smoother.estimate()).finalChi2;
-      times.checkpointGap = std::max(times.checkpointGap, (chi2 - optimum) / optimum);
-    }
-    if (times.total > budget && k + 1 < n) {
-      times.complete = false;
-      break;
-    }
-  }
-  if (checksum < 0) std::printf("?");
+  const auto checkpoint = [&](std::size_t k, const Smoother& s) {
+    if (!checkpoints || !(k + 1 == n / 4 || k + 1 == n / 2 || k + 1 == (3 * n) / 4)) return;
+    const FactorGraph graph = s.factors();
+    const double chi2 = graph.chi2(s.estimate());
+    const double optimum = optimize(graph, s.estimate()).finalChi2;
+    times.checkpointGap = std::max(times.checkpointGap, (chi2 - optimum) / optimum);
+  };
+  const ReplayLoopTimes loop = replayPoseGraph(replay, smoother, checkpoint, budget);
+  if (loop.checksum < 0) std::printf("?");
+  times.total = loop.stepSecondsSum;
+  times.cpu = loop.cpuSeconds;
+  times.worst = loop.worstStepSeconds;
+  times.steps = loop.steps;
+  times.complete = loop.complete;
   return times;
 }
 

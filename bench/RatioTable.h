@@ -37,12 +37,9 @@ class RatioTable {
 
  private:
   struct Entry {
-    double wallMs = 0.0;
-    double cpuMs = 0.0;
-    double chi2 = 0.0;
-    double iterations = 0.0;
-    bool fromMedian = false;
-    bool valid = false;
+    double wallMs = 0.0, cpuMs = 0.0;  ///< the run's time per iteration
+    double chi2 = 0.0, iterations = 0.0;  ///< the run's counters
+    bool fromMedian = false, valid = false;
     std::string error;
   };
   const Entry* find(const std::string& solver, const std::string& dataset) const;

@@ -1,18 +1,14 @@
 // semslam eval ate|rpe: trajectory error metrics exactly as evo (MichaelGrupp/evo) defines them — absolute pose
 // error (evo_ape) and relative pose error (evo_rpe) with evo's association, alignment and statistics. See
-// src/semslam/eval/TrajectoryEvaluation.h and docs/evaluation.md.
+// src/semslam/eval/TrajectoryEvaluation.h, io/TrajectoryErrorReport.h (the reading and the two printed forms) and
+// docs/evaluation.md.
 
 #include <cstdio>
-#include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 
 #include "Commands.h"
-#include "semslam/eval/TrajectoryEvaluation.h"
-#include "semslam/io/TrajectoryFormat.h"
-#include "semslam/core/InputError.h"
+#include "semslam/io/TrajectoryErrorReport.h"
 
 namespace semslam::cli {
 
@@ -37,45 +33,14 @@ struct EvalOptions {
   bool json = false;
 };
 
-std::string relationTitle(PoseRelation relation) {
-  switch (relation) {
-    case PoseRelation::TranslationPart: return "translation part (m)";
-    case PoseRelation::AngleDeg: return "rotation angle (deg)";
-    case PoseRelation::AngleRad: return "rotation angle (rad)";
-    case PoseRelation::RotationPart: return "rotation part (unit-less)";
-    case PoseRelation::Full: return "full transformation (unit-less)";
-  }
-  return "";
-}
-
-std::string alignmentTitle(AlignmentMode mode) {
-  switch (mode) {
-    case AlignmentMode::None: return "(not aligned)";
-    case AlignmentMode::Se3: return "(with SE(3) Umeyama alignment)";
-    case AlignmentMode::Sim3: return "(with Sim(3) Umeyama alignment)";
-    case AlignmentMode::Scale: return "(scale corrected)";
-    case AlignmentMode::Origin: return "(with origin alignment)";
-  }
-  return "";
-}
-
-std::string formatDelta(double delta, DeltaUnit unit) {
-  std::ostringstream s;
-  if (unit == DeltaUnit::Frames) {
-    s << static_cast<long long>(delta);
-  } else {
-    s << delta;
-    if (s.str().find_first_of(".e") == std::string::npos) s << ".0";  // evo prints the float: 10.0
-  }
-  return s.str();
-}
-
 void run(const EvalOptions& o) {
-  const TrajectoryFormat estimateFormat = parseTrajectoryFormat(o.estimateFormat.empty() ? o.format : o.estimateFormat);
-  const TrajectoryFormat referenceFormat =
-      parseTrajectoryFormat(o.referenceFormat.empty() ? o.format : o.referenceFormat);
-
-  EvaluationOptions options;
+  TrajectoryErrorRequest request;
+  request.relative = o.relative;
+  request.reference = o.reference;
+  request.estimate = o.estimate;
+  request.estimateFormat = parseTrajectoryFormat(o.estimateFormat.empty() ? o.format : o.estimateFormat);
+  request.referenceFormat = parseTrajectoryFormat(o.referenceFormat.empty() ? o.format : o.referenceFormat);
+  EvaluationOptions& options = request.options;
   options.relation = parsePoseRelation(o.relation);
   options.alignment = parseAlignmentMode(o.align);
   options.maxTimeDifference = o.maxTimeDifference;
@@ -85,57 +50,9 @@ void run(const EvalOptions& o) {
   options.allPairs = o.allPairs;
   options.relativeDeltaTolerance = o.deltaTolerance;
   options.pairsFromReference = o.pairsFromReference;
-
-  const Trajectory reference = readTrajectory(o.reference, referenceFormat);
-  const Trajectory estimate = readTrajectory(o.estimate, estimateFormat);
-  const EvaluationResult result = o.relative ? evaluateRelativePoseError(reference, estimate, options)
-                                             : evaluateAbsolutePoseError(reference, estimate, options);
-  const ErrorStatistics& s = result.statistics;
-  const bool scaled = options.alignment == AlignmentMode::Sim3 || options.alignment == AlignmentMode::Scale;
-
-  if (o.json) {
-    nlohmann::json out;
-    out["metric"] = o.relative ? "rpe" : "ape";
-    out["relation"] = toString(options.relation);
-    out["unit"] = unitOf(options.relation);
-    out["align"] = toString(options.alignment);
-    out["reference"] = o.reference;
-    out["estimate"] = o.estimate;
-    out["rmse"] = s.rmse;
-    out["mean"] = s.mean;
-    out["median"] = s.median;
-    out["max"] = s.max;
-    out["min"] = s.min;
-    out["sse"] = s.sse;
-    out["std"] = s.std;
-    out["pairs"] = s.count;
-    out["associated_poses"] = result.associatedPoses;
-    if (scaled) out["scale"] = result.alignment.scale;
-    if (o.relative) {
-      out["delta"] = options.delta;
-      out["delta_unit"] = toString(options.deltaUnit);
-      out["all_pairs"] = options.allPairs;
-    }
-    std::cout << out.dump(2) << "\n";
-    return;
-  }
-
-  // evo's Result.pretty_str: the title, a blank line, then the statistics sorted by name as "%10s\t%.6f".
-  std::string title = (o.relative ? "RPE w.r.t. " : "APE w.r.t. ") + relationTitle(options.relation);
-  if (o.relative) {
-    title += "\nfor delta = " + formatDelta(options.delta, options.deltaUnit) + " (" + toString(options.deltaUnit) +
-             ")" + (options.allPairs ? " using all pairs" : " using consecutive pairs");
-  }
-  title += "\n" + alignmentTitle(options.alignment);
-  std::printf("%s\n\n", title.c_str());
-  const std::pair<const char*, double> rows[] = {{"max", s.max},   {"mean", s.mean}, {"median", s.median},
-                                                 {"min", s.min},   {"rmse", s.rmse}, {"sse", s.sse},
-                                                 {"std", s.std}};
-  for (const auto& [name, value] : rows) std::printf("%10s\t%.6f\n", name, value);
-  std::printf("\n%zu %s compared (%zu associated poses)", s.count, o.relative ? "pose pairs" : "poses",
-              result.associatedPoses);
-  if (scaled) std::printf(", scale correction %.6f", result.alignment.scale);
-  std::printf("\n");
+  const EvaluationResult result = evaluateTrajectoryFiles(request);
+  const std::string text = o.json ? trajectoryErrorJson(request, result) : trajectoryErrorText(request, result);
+  std::fputs(text.c_str(), stdout);
 }
 
 void addMetric(CLI::App& eval, const std::string& name, bool relative, const std::string& description) {

@@ -2,28 +2,24 @@
 //
 //   aliased2d  paper A's perceptually aliased scenario: N tracks of K steps from one start (src/semslam/sim/
 //              Aliased2dSimulator.h), the scenario from --scenario FILE or the built-in default.
+//              Several tracks go to a folder (io/Aliased2dTrackFolder.h).
 //   semantic   paper B-style runs in 2D or 3D along a generated path or a TUM/KITTI trajectory
-//              (src/semslam/sim/SemanticSimulator.h).
-
-#include <unistd.h>
+//              (src/semslam/sim/SemanticSimulator.h; the truth and the run: io/SemanticSimulationTruth.h).
 
 #include <cstdio>
 #include <filesystem>
 #include <memory>
-#include <numbers>
 #include <optional>
 #include <string>
 
 #include "Commands.h"
-#include "semslam/io/TrajectoryFormat.h"
 #include "semslam/core/InputError.h"
+#include "semslam/core/ProgressBar.h"
+#include "semslam/io/Aliased2dTrackFolder.h"
 #include "semslam/io/MeasurementLogFile.h"
-#include "semslam/sim/Aliased2dSimulator.h"
-#include "semslam/sim/GeneratedPath.h"
 #include "semslam/io/ScenarioFile.h"
-#include "semslam/sim/SemanticSimulator.h"
-#include "semslam/sim/SimulationStreams.h"
-#include "semslam/sim/TrajectoryInput.h"
+#include "semslam/io/SemanticSimulationTruth.h"
+#include "semslam/sim/Aliased2dSimulator.h"
 
 namespace semslam::cli {
 
@@ -51,36 +47,6 @@ struct AliasedOptions {
   std::string writeScenario;
 };
 
-/// Progress on stderr: one line rewritten in place on a terminal, a line per tenth otherwise.
-class Progress {
- public:
-  explicit Progress(int total) : total_(total), terminal_(isatty(STDERR_FILENO) != 0) {}
-  void update(int done) {
-    if (total_ <= 1) return;
-    if (terminal_) {
-      std::fprintf(stderr, "\rsimulate aliased2d: track %d/%d", done, total_);
-      if (done == total_) std::fprintf(stderr, "\n");
-    } else if (done * 10 / total_ > printedTenths_ || done == total_) {
-      printedTenths_ = done * 10 / total_;
-      std::fprintf(stderr, "simulate aliased2d: track %d/%d\n", done, total_);
-    }
-    std::fflush(stderr);
-  }
-
- private:
-  int total_;
-  bool terminal_;
-  int printedTenths_ = 0;
-};
-
-std::string trackFileName(int track, int tracks) {
-  int width = 3;
-  for (int n = tracks - 1; n >= 1000; n /= 10) ++width;
-  std::string digits = std::to_string(track);
-  if (static_cast<int>(digits.size()) < width) digits.insert(0, static_cast<std::size_t>(width) - digits.size(), '0');
-  return "track_" + digits + ".jsonl";
-}
-
 void runAliased(const AliasedOptions& options) {
   Aliased2dScenario scenario =
       options.scenario.empty() ? defaultAliased2dScenario() : readAliased2dScenario(options.scenario);
@@ -107,16 +73,10 @@ void runAliased(const AliasedOptions& options) {
                 static_cast<unsigned long long>(options.seed), options.out.c_str());
     return;
   }
-  if (fs::exists(options.out) && !fs::is_directory(options.out)) {
-    throw InputError("--out " + options.out + ": is a file; with several tracks --out names a folder");
-  }
-  fs::create_directories(options.out);
-  Progress progress(options.tracks);
-  for (int track = 0; track < options.tracks; ++track) {
-    const MeasurementLog log = simulateAliased2dTrack(scenario, options.seed, track, options.steps, options.tracks);
-    writeMeasurementLog((fs::path(options.out) / trackFileName(track, options.tracks)).string(), log);
-    progress.update(track + 1);
-  }
+  // One line rewritten in place on a terminal, a line per tenth otherwise.
+  ProgressBar progress("simulate aliased2d tracks", options.tracks, ProgressBar::Mode::Always);
+  writeAliased2dTrackFolder(options.out, scenario, options.seed, options.tracks, options.steps,
+                            [&progress](int done, int) { progress.update(done); });
   std::printf("wrote %d tracks of %d steps (scenario '%s', seed %llu) to %s/\n", options.tracks, options.steps,
               scenario.name.c_str(), static_cast<unsigned long long>(options.seed), options.out.c_str());
 }
@@ -148,82 +108,18 @@ void addAliased(CLI::App& simulate) {
 struct SemanticCliOptions {
   std::string out;
   std::uint64_t seed = 1;
-  int dimension = 2;
-  std::string trajectory;
-  std::string trajectoryFormat;
-  std::string trajectoryFrame;
-  int stride = 1;
-  std::string path = "loop";
-  std::optional<int> steps;
-  double stepLength = 1.0;
-  int loops = 2;
-  double rowLength = 30.0;
-  double rowSpacing = 6.0;
-  double heightAmplitude = 1.0;
-  std::optional<double> timeStep;
+  SemanticTruthOptions truth;
   SemanticSimOptions sim;
 };
 
-SimTrajectory semanticTruth(const SemanticCliOptions& options, std::string& description) {
-  if (options.trajectory.empty()) {
-    if (!options.trajectoryFormat.empty() || !options.trajectoryFrame.empty() || options.stride != 1) {
-      throw InputError("--trajectory-format, --trajectory-frame and --stride apply to --trajectory FILE only");
-    }
-    PathOptions path;
-    path.shape = parsePathShape(options.path);
-    path.dimension = options.dimension;
-    path.steps = options.steps.value_or(200);
-    path.stepLength = options.stepLength;
-    path.loops = options.loops;
-    path.rowLength = options.rowLength;
-    path.rowSpacing = options.rowSpacing;
-    path.heightAmplitude = options.heightAmplitude;
-    path.timeStep = options.timeStep.value_or(1.0);
-    if (path.steps < 1) throw InputError("--steps: must be >= 1 for a generated path");
-    char text[160];
-    std::snprintf(text, sizeof text, "%s path (%d steps of %g m%s)", options.path.c_str(), path.steps, path.stepLength,
-                  path.shape == PathShape::Loop ? (", " + std::to_string(path.loops) + " loops").c_str() : "");
-    description = text;
-    std::mt19937 rng = simulationStream(options.seed, 0, SimStream::Path);
-    try {
-      return generatePath(path, rng);
-    } catch (const std::invalid_argument& error) {
-      throw InputError(error.what());
-    }
-  }
-  if (options.trajectoryFormat.empty()) throw InputError("--trajectory needs --trajectory-format tum|kitti");
-  const TrajectoryFormat format = parseTrajectoryFormat(options.trajectoryFormat);
-  TrajectoryInputOptions input;
-  input.dimension = options.dimension;
-  input.frame = options.trajectoryFrame.empty()
-                    ? (format == TrajectoryFormat::Kitti ? TrajectoryFrame::Camera : TrajectoryFrame::Body)
-                    : parseTrajectoryFrame(options.trajectoryFrame);
-  input.stride = options.stride;
-  input.maxSteps = options.steps.value_or(0);
-  input.timeStep = options.timeStep.value_or(0.1);
-  if (input.maxSteps < 0) throw InputError("--steps: must be >= 0 (0: the whole file)");
-  const Trajectory trajectory = readTrajectory(options.trajectory, format);
-  description = "trajectory " + fs::path(options.trajectory).filename().string() + " (" + options.trajectoryFormat +
-                ", " + (input.frame == TrajectoryFrame::Camera ? "camera" : "body") + " frame, stride " +
-                std::to_string(input.stride) + ")";
-  return simTrajectoryFromFile(trajectory, input, options.trajectory);
-}
-
-void runSemantic(SemanticCliOptions options) {
-  try {
-    validateSemanticSimOptions(options.sim);
-  } catch (const std::invalid_argument& error) {
-    throw InputError(error.what());
-  }
-  std::string description;
-  const SimTrajectory truth = semanticTruth(options, description);
-  options.sim.description = description;
-  const MeasurementLog log = simulateSemantic(truth, options.sim, options.seed);
+void runSemantic(const SemanticCliOptions& options) {
+  const SemanticSimulation simulation = simulateSemanticRun(options.truth, options.sim, options.seed);
+  const MeasurementLog& log = simulation.log;
   writeMeasurementLog(options.out, log);
   std::size_t detections = 0;
   for (const TimeStep& step : log.steps) detections += step.detections.size();
   std::printf("wrote %zu steps, %zu landmarks, %zu detections (%dD, %s, seed %llu) to %s\n", log.steps.size(),
-              log.header.landmarkTruth.size(), detections, options.dimension, description.c_str(),
+              log.header.landmarkTruth.size(), detections, options.truth.dimension, simulation.description.c_str(),
               static_cast<unsigned long long>(options.seed), options.out.c_str());
 }
 
@@ -234,26 +130,27 @@ void addSemantic(CLI::App& simulate) {
       "semantic", "Paper B-style semantic SLAM run in 2D or 3D: landmarks with classes, labels, clutter");
   command->add_option("--out", o.out, "the log to write")->required();
   command->add_option("--seed", o.seed, "random seed (unsigned 64-bit)")->check(kSeedValidator)->capture_default_str();
-  command->add_option("--dimension", o.dimension, "2 or 3")->check(CLI::IsMember({2, 3}))->capture_default_str();
-  command->add_option("--trajectory", o.trajectory, "true trajectory file (default: a generated path)")
+  SemanticTruthOptions& t = o.truth;
+  command->add_option("--dimension", t.dimension, "2 or 3")->check(CLI::IsMember({2, 3}))->capture_default_str();
+  command->add_option("--trajectory", t.trajectory, "true trajectory file (default: a generated path)")
       ->check(CLI::ExistingFile);
-  command->add_option("--trajectory-format", o.trajectoryFormat, "tum or kitti")
+  command->add_option("--trajectory-format", t.trajectoryFormat, "tum or kitti")
       ->check(CLI::IsMember({"tum", "kitti"}));
   command
-      ->add_option("--trajectory-frame", o.trajectoryFrame,
+      ->add_option("--trajectory-frame", t.trajectoryFrame,
                    "body or camera (poses of a z-forward camera); default camera for kitti, body for tum")
       ->check(CLI::IsMember({"body", "camera"}));
-  command->add_option("--stride", o.stride, "keep every N-th pose of the file")->check(CLI::Range(1, 1000000));
-  command->add_option("--path", o.path, "generated path: loop (seeded) or lawnmower")
+  command->add_option("--stride", t.stride, "keep every N-th pose of the file")->check(CLI::Range(1, 1000000));
+  command->add_option("--path", t.path, "generated path: loop (seeded) or lawnmower")
       ->check(CLI::IsMember({"loop", "lawnmower"}))
       ->capture_default_str();
-  command->add_option("--steps", o.steps, "steps after the first pose (generated: default 200; file: 0 = all)");
-  command->add_option("--step-length", o.stepLength, "generated path: metres per step")->capture_default_str();
-  command->add_option("--loops", o.loops, "loop path: times around")->capture_default_str();
-  command->add_option("--row-length", o.rowLength, "lawnmower: row length (m)")->capture_default_str();
-  command->add_option("--row-spacing", o.rowSpacing, "lawnmower: row spacing (m)")->capture_default_str();
-  command->add_option("--height-amplitude", o.heightAmplitude, "3D loop: height undulation (m)")->capture_default_str();
-  command->add_option("--time-step", o.timeStep, "seconds per step (generated: 1; file without times: 0.1)");
+  command->add_option("--steps", t.steps, "steps after the first pose (generated: default 200; file: 0 = all)");
+  command->add_option("--step-length", t.stepLength, "generated path: metres per step")->capture_default_str();
+  command->add_option("--loops", t.loops, "loop path: times around")->capture_default_str();
+  command->add_option("--row-length", t.rowLength, "lawnmower: row length (m)")->capture_default_str();
+  command->add_option("--row-spacing", t.rowSpacing, "lawnmower: row spacing (m)")->capture_default_str();
+  command->add_option("--height-amplitude", t.heightAmplitude, "3D loop: height undulation (m)")->capture_default_str();
+  command->add_option("--time-step", t.timeStep, "seconds per step (generated: 1; file without times: 0.1)");
   SemanticSimOptions& s = o.sim;
   command->add_option("--classes", s.classes, "number of classes M")->capture_default_str();
   command->add_option("--landmarks", s.landmarks, "number of landmarks (0: from --landmark-density)")

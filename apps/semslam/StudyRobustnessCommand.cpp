@@ -6,26 +6,25 @@
 // Two one-axis sweeps (noise scale at misclassification 0.1; misclassification at noise scale 1), every cell's
 // perturbed log shared by all methods, cells spread over --threads worker threads. DIR gets robustness.csv (one row
 // per axis, level, seed and method), robustness_summary.csv (mean and 95% t-interval per axis, level and method)
-// and study.json (the settings and the wall time); python/plot_robustness.py DIR draws the box plots.
+// and study.json (the settings and the wall time), written by study/RobustnessStudyFolder.h; paper B's options are
+// the shared block of MethodOptions.h (--gate, --null-weight, ..., --no-warm-start); python/plot_robustness.py DIR
+// draws the box plots.
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "Commands.h"
-#include "semslam/io/AtomicFile.h"
+#include "MethodOptions.h"
 #include "semslam/core/InputError.h"
-#include "semslam/io/MeasurementLogFile.h"
 #include "semslam/core/ProgressBar.h"
-#include "semslam/study/RobustnessStudy.h"
+#include "semslam/io/MeasurementLogFile.h"
 #include "semslam/solve/SmootherFactory.h"
+#include "semslam/study/RobustnessStudy.h"
+#include "semslam/study/RobustnessStudyFolder.h"
 
 namespace semslam::cli {
 
@@ -41,9 +40,8 @@ struct RobustnessArguments {
   std::uint64_t baseSeed = 0;
   int threads = 2;
   int maxSteps = 0;
-  double gate = AssociationGate::kDefaultConfidence;
   std::string smoother = "incremental";
-  bool warmStart = true;
+  SemanticSlamOptions slam;  ///< paper B's options (MethodOptions.h); the back end is --smoother
   double modelFloor = 0.0;
   bool quiet = false;
   bool progress = false;
@@ -101,9 +99,8 @@ void runRobustness(const RobustnessArguments& arguments) {
   options.baseSeed = arguments.baseSeed;
   options.threads = arguments.threads;
   options.maxSteps = arguments.maxSteps;
-  options.slam.gateConfidence = arguments.gate;
+  options.slam = arguments.slam;
   options.slam.smoother = smootherFactory(parseSmootherKind(arguments.smoother));
-  options.slam.warmStart = arguments.warmStart;
   options.modelMisclassificationFloor = arguments.modelFloor;
   try {
     validateRobustnessOptions(options);
@@ -127,45 +124,14 @@ void runRobustness(const RobustnessArguments& arguments) {
     throw InputError(arguments.log, 0, error.what());
   }
 
-  namespace fs = std::filesystem;
-  fs::create_directories(arguments.out);
-  const std::string csv = robustnessCsv(study.rows), summary = robustnessSummaryCsv(study.rows);
-  writeFileAtomically((fs::path(arguments.out) / "robustness.csv").string(), [&](std::ostream& out) { out << csv; });
-  writeFileAtomically((fs::path(arguments.out) / "robustness_summary.csv").string(),
-                      [&](std::ostream& out) { out << summary; });
-  int failed = 0;
+  writeRobustnessStudyFolder(arguments.out, study, options, {arguments.log, arguments.methods, arguments.smoother});
+  const int failed = failedRobustnessRuns(study.rows);
+  int warned = 0;
   for (const RobustnessRow& row : study.rows) {
-    if (row.error.empty()) continue;
-    if (++failed <= 5 && !arguments.quiet) {
-      std::fprintf(stderr, "semslam: warning: %s %g seed %d %s failed: %s\n", robustnessAxisName(row.axis).c_str(),
-                   row.level, row.seed, row.method.c_str(), row.error.c_str());
-    }
+    if (row.error.empty() || arguments.quiet || ++warned > 5) continue;
+    std::fprintf(stderr, "semslam: warning: %s %g seed %d %s failed: %s\n", robustnessAxisName(row.axis).c_str(),
+                 row.level, row.seed, row.method.c_str(), row.error.c_str());
   }
-  nlohmann::json settings = {
-      {"schema", "semslam.study.robustness/1"},
-      {"log", arguments.log},
-      {"methods", arguments.methods},
-      {"odom_noise_scales", options.noiseScales},
-      {"misclassification_rates", options.misclassificationRates},
-      {"noise_sweep_misclassification", options.noiseSweepMisclassification},
-      {"misclassification_sweep_noise_scale", options.misclassificationSweepNoiseScale},
-      {"baseline_sigma_per_second", {options.baseline.sigmaX, options.baseline.sigmaY, options.baseline.sigmaTheta}},
-      {"seeds", options.seeds},
-      {"base_seed", options.baseSeed},
-      {"max_steps", options.maxSteps},
-      {"gate", options.slam.gateConfidence},
-      {"smoother", arguments.smoother},
-      {"warm_start", arguments.warmStart},
-      {"model_misclassification_floor", options.modelMisclassificationFloor},
-      {"stuck_ratio", options.stuckRatio},
-      {"stuck_margin_m", options.stuckMargin},
-      {"threads", options.threads},
-      {"runs", study.rows.size()},
-      {"failed_runs", failed},
-      {"wall_time_s", study.wallSeconds},
-  };
-  writeFileAtomically((fs::path(arguments.out) / "study.json").string(),
-                      [&](std::ostream& out) { out << settings.dump(2) << "\n"; });
   std::printf("study robustness: %zu runs (%d failed) of %s on %s in %.1f s; wrote %s/robustness.csv, "
               "robustness_summary.csv, study.json\n",
               study.rows.size(), failed, arguments.methods.c_str(), arguments.log.c_str(), study.wallSeconds,
@@ -197,11 +163,7 @@ void addStudyRobustnessCommand(CLI::App& study) {
   command->add_option("--smoother", a->smoother, "back end: incremental or batch")
       ->check(CLI::IsMember({"incremental", "batch"}))
       ->capture_default_str();
-  command->add_flag("--no-warm-start{false}", a->warmStart,
-                    "mm, mm-nh: choose mixture components at the odometry prediction (docs/max-mixtures.md)");
-  command->add_option("--gate", a->gate, "chi-square gate confidence (paper B: 0.9)")
-      ->check(CLI::Range(1e-9, 1.0 - 1e-12))
-      ->capture_default_str();
+  addSemanticSlamOptions(command, a->slam);
   command->add_option("--model-floor", a->modelFloor,
                       "the methods' model misclassification rate is max(p, this) (0: the exact rate)")
       ->check(CLI::Range(0.0, 0.5))

@@ -1,12 +1,14 @@
 // RobustnessStudy: a tiny study on a simulated log (2 levels per axis, 2 seeds): the rows are complete and in
 // order, seeds are paired (the overlapping cell of both sweeps, and a method's result does not depend on which
 // other methods run), the CSV is identical with 1 and 2 threads, stuck is defined for mm / mm-nh only; the t
-// interval; and the CLI: a small run writes its files, bad input exits 2.
+// interval; and the CLI: a small run writes its files (study.json with the shared method options), bad input
+// exits 2.
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "semslam/study/RobustnessStudy.h"
@@ -146,7 +148,7 @@ TEST(StudyCommand, SmallRunWritesItsFilesAndBadInputExitsTwo) {
   const std::string out = scratch.file("out");
   const std::string base = "study robustness --log \"" + log + "\" --out \"" + out + "\" --seeds 1 --quiet ";
   const test::CommandResult ok =
-      test::runSemslam(base + "--methods known,mm --odom-noise-scale 0,1 --misclassification 0.2");
+      test::runSemslam(base + "--methods known,mm --odom-noise-scale 0,1 --misclassification 0.2 --null-weight 0.2");
   ASSERT_EQ(ok.exitCode, 0) << ok.output;
   const std::string csv = test::fileBytes(out + "/robustness.csv");
   EXPECT_EQ(csv.rfind("axis,level,seed,method,ate_rmse,rot_rmse,da_accuracy,landmarks_estimated,landmarks_true,"
@@ -155,7 +157,14 @@ TEST(StudyCommand, SmallRunWritesItsFilesAndBadInputExitsTwo) {
             0u);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 3 * 2);
   EXPECT_FALSE(test::fileBytes(out + "/robustness_summary.csv").empty());
-  EXPECT_FALSE(test::fileBytes(out + "/study.json").empty());
+  const nlohmann::json settings = nlohmann::json::parse(test::fileBytes(out + "/study.json"));
+  EXPECT_EQ(settings["schema"], "semslam.study.robustness/1");
+  EXPECT_EQ(settings["methods"], "known,mm");
+  EXPECT_EQ(settings["runs"], 6);
+  EXPECT_DOUBLE_EQ(settings["null_weight"].get<double>(), 0.2);  // the shared option block (MethodOptions.h)
+  for (const char* key : {"gate", "null_sigma_scale", "em_window", "em_iterations", "warm_start", "smoother"}) {
+    EXPECT_TRUE(settings.contains(key)) << key;
+  }
 
   for (const std::string bad : {"--methods known,magic", "--odom-noise-scale ,", "--odom-noise-scale=-1",
                                 "--misclassification 1", "--misclassification 0.1,x", "--seeds 0"}) {

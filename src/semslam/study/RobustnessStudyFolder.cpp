@@ -1,0 +1,60 @@
+#include "semslam/study/RobustnessStudyFolder.h"
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "semslam/io/AtomicFile.h"
+
+namespace semslam {
+
+int failedRobustnessRuns(const std::vector<RobustnessRow>& rows) {
+  int failed = 0;
+  for (const RobustnessRow& row : rows) failed += row.error.empty() ? 0 : 1;
+  return failed;
+}
+
+std::string robustnessStudyJson(const RobustnessStudy& study, const RobustnessStudyOptions& options,
+                                const RobustnessStudyLabels& labels) {
+  const nlohmann::json settings = {
+      {"schema", "semslam.study.robustness/1"},
+      {"log", labels.log},
+      {"methods", labels.methods},
+      {"odom_noise_scales", options.noiseScales},
+      {"misclassification_rates", options.misclassificationRates},
+      {"noise_sweep_misclassification", options.noiseSweepMisclassification},
+      {"misclassification_sweep_noise_scale", options.misclassificationSweepNoiseScale},
+      {"baseline_sigma_per_second", {options.baseline.sigmaX, options.baseline.sigmaY, options.baseline.sigmaTheta}},
+      {"seeds", options.seeds},
+      {"base_seed", options.baseSeed},
+      {"max_steps", options.maxSteps},
+      {"gate", options.slam.gateConfidence},
+      {"null_weight", options.slam.nullWeight},
+      {"null_sigma_scale", options.slam.nullSigmaScale},
+      {"em_window", options.slam.emWindow},
+      {"em_iterations", options.slam.emIterations},
+      {"smoother", labels.smoother},
+      {"warm_start", options.slam.warmStart},
+      {"model_misclassification_floor", options.modelMisclassificationFloor},
+      {"stuck_ratio", options.stuckRatio},
+      {"stuck_margin_m", options.stuckMargin},
+      {"threads", options.threads},
+      {"runs", study.rows.size()},
+      {"failed_runs", failedRobustnessRuns(study.rows)},
+      {"wall_time_s", study.wallSeconds},
+  };
+  return settings.dump(2) + "\n";
+}
+
+void writeRobustnessStudyFolder(const std::string& directory, const RobustnessStudy& study,
+                                const RobustnessStudyOptions& options, const RobustnessStudyLabels& labels) {
+  namespace fs = std::filesystem;
+  fs::create_directories(directory);
+  const auto write = [&directory](const char* name, const std::string& text) {
+    writeFileAtomically((fs::path(directory) / name).string(), [&text](std::ostream& out) { out << text; });
+  };
+  write("robustness.csv", robustnessCsv(study.rows));
+  write("robustness_summary.csv", robustnessSummaryCsv(study.rows));
+  write("study.json", robustnessStudyJson(study, options, labels));
+}
+
+}  // namespace semslam
