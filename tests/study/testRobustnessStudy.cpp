@@ -162,7 +162,7 @@ TEST(StudyCommand, SmallRunWritesItsFilesAndBadInputExitsTwo) {
   EXPECT_EQ(settings["methods"], "known,mm");
   EXPECT_EQ(settings["runs"], 6);
   EXPECT_DOUBLE_EQ(settings["null_weight"].get<double>(), 0.2);  // the shared option block (MethodOptions.h)
-  for (const char* key : {"gate", "null_sigma_scale", "em_window", "em_iterations", "warm_start", "smoother"}) {
+  for (const char* key : {"gate", "null_sigma_scale", "em_window", "em_iterations", "birth", "unassigned_rate", "warm_start", "smoother"}) {
     EXPECT_TRUE(settings.contains(key)) << key;
   }
 

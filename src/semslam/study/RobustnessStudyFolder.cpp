@@ -32,6 +32,8 @@ std::string robustnessStudyJson(const RobustnessStudy& study, const RobustnessSt
       {"null_sigma_scale", options.slam.nullSigmaScale},
       {"em_window", options.slam.emWindow},
       {"em_iterations", options.slam.emIterations},
+      {"birth", birthRuleName(options.slam.birth)},
+      {"unassigned_rate", options.slam.unassignedRate},
       {"smoother", labels.smoother},
       {"warm_start", options.slam.warmStart},
       {"model_misclassification_floor", options.modelMisclassificationFloor},
