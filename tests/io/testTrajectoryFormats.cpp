@@ -6,7 +6,8 @@
 #include <cmath>
 #include <filesystem>
 
-#include "eval/EvalTestSupport.h"
+#include "support/InputErrorTesting.h"
+#include "support/TempFile.h"
 #include "semslam/io/EurocFormat.h"
 #include "semslam/io/KittiFormat.h"
 #include "semslam/io/TrajectoryFormat.h"
