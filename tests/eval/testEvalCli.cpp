@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "EvalTestSupport.h"
+#include "support/TempFile.h"
 #include "support/TestData.h"
 
 namespace semslam {

@@ -9,7 +9,8 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
-#include "eval/EvalTestSupport.h"
+#include "support/InputErrorTesting.h"
+#include "support/TempFile.h"
 #include "semslam/io/RunMetricsFile.h"
 #include "semslam/eval/RunEvaluation.h"
 #include "semslam/eval/RunMetrics.h"

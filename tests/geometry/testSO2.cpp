@@ -15,91 +15,33 @@
 #include <Eigen/Dense>
 
 #include "semslam/geometry/SO2.h"
-#include "support/NumericalDerivative.h"
+#include "support/LieGroupTesting.h"
+#include "support/RandomGeometry.h"
 
 namespace semslam {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-// Central differences with h = 1e-6: truncation ~1e-12, rounding ~1e-10 relative, so 1e-7 is tight but safe.
-constexpr double kJacobianTol = 1e-7;
-constexpr double kTol = 1e-13;
-constexpr int kRandomTrials = 50;
+using namespace test;  // kPi, kTol, kRandomTrials, kEdgeAngles, the Jacobian checks, EXPECT_MATRIX_NEAR
 
-::testing::AssertionResult MatricesNear(const char* actualExpr, const char* expectedExpr, const char*,
-                                        const Matrix& actual, const Matrix& expected, double tol) {
-  if (actual.rows() != expected.rows() || actual.cols() != expected.cols()) {
-    return ::testing::AssertionFailure() << actualExpr << " is " << actual.rows() << "x" << actual.cols() << ", "
-                                         << expectedExpr << " is " << expected.rows() << "x" << expected.cols();
-  }
-  const double scale = std::max(1.0, expected.cwiseAbs().maxCoeff());
-  const double error = (actual - expected).cwiseAbs().maxCoeff();
-  if (error <= tol * scale) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << actualExpr << " differs from " << expectedExpr << " by " << error
-                                       << " > " << tol << " * " << scale << "\n"
-                                       << actualExpr << " =\n"
-                                       << actual << "\n"
-                                       << expectedExpr << " =\n"
-                                       << expected;
-}
-#define EXPECT_MATRIX_NEAR(actual, expected, tol) EXPECT_PRED_FORMAT3(MatricesNear, actual, expected, tol)
+// The shared edge angles, plus π itself and the angle just above −π: SO2's Log range is (−π, π].
+const std::vector<double> kSO2EdgeAngles = [] {
+  std::vector<double> angles = kEdgeAngles;
+  angles.push_back(kPi);
+  angles.push_back(-kPi + 1e-12);
+  return angles;
+}();
 
-template <class Out, class In, class F>
-Matrix numeric(F f, const In& x, double h = 1e-6) {
-  return test::numericalDerivative<Out, In>(std::function<Out(const In&)>(f), x, h);
-}
-
-// Angles at which the formulas switch branches or lose digits if done naively.
-const std::vector<double> kEdgeAngles = {0.0,       1e-10,          -1e-10,         1e-6,
-                                         -1e-6,     1e-3,           -1e-3,          0.5,
-                                         kPi - 1e-3, kPi - 1e-6,   -kPi + 1e-3,    -kPi + 1e-6,
-                                         kPi,       -kPi + 1e-12};
-
-struct Random {
-  std::mt19937 rng{20240611u};
-  double angle() { return std::uniform_real_distribution<double>(-kPi, kPi)(rng); }
-  Point2 point() {
-    std::uniform_real_distribution<double> u(-5.0, 5.0);
-    const double x = u(rng);
-    return Point2(x, u(rng));
-  }
+struct Random : RandomPlane {
+  Random() : RandomPlane(20240611u) {}
 };
-
-// A finite-difference step that keeps Log(x ⊕ ±h e_i) on the same side of its branch cut at ±π.
-double logStep(double theta) { return std::min(1e-6, 0.1 * (kPi - std::abs(theta))); }
 
 void checkJacobians(const SO2& a, const SO2& b, const Point2& p) {
   SCOPED_TRACE(::testing::Message() << "a = " << a << ", b = " << b << ", p = " << p.transpose());
-  Matrix1 H1, H2, H;
-  a.compose(b, &H1, &H2);
-  EXPECT_MATRIX_NEAR(H1, numeric<SO2>([&](const SO2& x) { return x.compose(b); }, a), kJacobianTol);
-  EXPECT_MATRIX_NEAR(H2, numeric<SO2>([&](const SO2& x) { return a.compose(x); }, b), kJacobianTol);
-
-  a.inverse(&H);
-  EXPECT_MATRIX_NEAR(H, numeric<SO2>([](const SO2& x) { return x.inverse(); }, a), kJacobianTol);
-
-  a.between(b, &H1, &H2);
-  EXPECT_MATRIX_NEAR(H1, numeric<SO2>([&](const SO2& x) { return x.between(b); }, a), kJacobianTol);
-  EXPECT_MATRIX_NEAR(H2, numeric<SO2>([&](const SO2& x) { return a.between(x); }, b), kJacobianTol);
-
-  MatrixN<2, 1> Hr;
-  Matrix2 Hp;
-  a.rotate(p, &Hr, &Hp);
-  EXPECT_MATRIX_NEAR(Hr, numeric<Point2>([&](const SO2& x) { return x.rotate(p); }, a), kJacobianTol);
-  EXPECT_MATRIX_NEAR(Hp, numeric<Point2>([&](const Point2& x) { return a.rotate(x); }, p), kJacobianTol);
-  a.unrotate(p, &Hr, &Hp);
-  EXPECT_MATRIX_NEAR(Hr, numeric<Point2>([&](const SO2& x) { return x.unrotate(p); }, a), kJacobianTol);
-  EXPECT_MATRIX_NEAR(Hp, numeric<Point2>([&](const Point2& x) { return a.unrotate(x); }, p), kJacobianTol);
-
-  const Vector1 xi(a.theta());
-  SO2::Exp(xi, &H);
-  EXPECT_MATRIX_NEAR(H, numeric<SO2>([](const Vector1& v) { return SO2::Exp(v); }, xi), kJacobianTol);
-
-  if (kPi - std::abs(a.theta()) > 1e-7) {  // Log jumps at ±π; closer than this no finite step is usable
-    SO2::Log(a, &H);
-    EXPECT_MATRIX_NEAR(H, numeric<Vector1>([](const SO2& x) { return SO2::Log(x); }, a, logStep(a.theta())),
-                       kJacobianTol);
-  }
+  checkGroupOperationJacobians(a, b);
+  checkActionJacobians(a, p, &SO2::rotate);
+  checkActionJacobians(a, p, &SO2::unrotate);
+  checkExpJacobian<SO2>(Vector1(a.theta()));
+  checkLogJacobian(a, a.theta());
 }
 
 TEST(SO2Test, ConstructionAndAccessors) {
@@ -145,7 +87,7 @@ TEST(SO2Test, LogRangeIsHalfOpenAtMinusPi) {
 
 TEST(SO2Test, ExpLogRoundTrip) {
   Random random;
-  std::vector<double> angles = kEdgeAngles;
+  std::vector<double> angles = kSO2EdgeAngles;
   for (int i = 0; i < kRandomTrials; ++i) angles.push_back(random.angle());
   for (double theta : angles) {
     if (theta == -kPi) continue;
@@ -161,12 +103,9 @@ TEST(SO2Test, GroupIdentities) {
   for (int i = 0; i < kRandomTrials; ++i) {
     const SO2 a(random.angle()), b(random.angle()), c(random.angle());
     const Point2 p = random.point();
-    EXPECT_MATRIX_NEAR((a * b).matrix(), a.matrix() * b.matrix(), kTol);
+    checkGroupAxioms(a, b, c, kTol);
     EXPECT_MATRIX_NEAR(a.compose(b).matrix(), (a * b).matrix(), 0.0);
     EXPECT_MATRIX_NEAR(a.inverse().matrix(), a.matrix().transpose(), kTol);
-    EXPECT_TRUE((a * a.inverse()).equals(SO2(), kTol));
-    EXPECT_TRUE(a.between(b).equals(a.inverse() * b, kTol));
-    EXPECT_TRUE(((a * b) * c).equals(a * (b * c), kTol));
     EXPECT_MATRIX_NEAR(a.rotate(p), a.matrix() * p, kTol);
     EXPECT_MATRIX_NEAR(a.unrotate(p), a.matrix().transpose() * p, kTol);
     EXPECT_MATRIX_NEAR(a.unrotate(a.rotate(p)), p, kTol);
@@ -188,7 +127,7 @@ TEST(SO2Test, JacobiansOnRandomInputs) {
 
 TEST(SO2Test, JacobiansAtEdgeAngles) {
   Random random;
-  for (double ta : kEdgeAngles) {
+  for (double ta : kSO2EdgeAngles) {
     for (double tb : {0.0, 1e-6, kPi - 1e-6, -kPi + 1e-3, 1.0}) {
       checkJacobians(SO2(ta), SO2(tb), random.point());
     }

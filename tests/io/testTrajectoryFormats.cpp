@@ -6,7 +6,8 @@
 #include <cmath>
 #include <filesystem>
 
-#include "eval/EvalTestSupport.h"
+#include "support/InputErrorTesting.h"
+#include "support/TempFile.h"
 #include "semslam/io/EurocFormat.h"
 #include "semslam/io/KittiFormat.h"
 #include "semslam/io/TrajectoryFormat.h"
@@ -16,6 +17,7 @@ namespace semslam {
 namespace {
 
 using test::expectInputError;
+using test::expectInputErrorReading;
 using test::TempFile;
 
 constexpr const char* kIdentity12 = "1 0 0 0 0 1 0 0 0 0 1 0";
@@ -40,51 +42,18 @@ TEST(TumFormat, ReadsPosesCommentsBlankLinesAndCrlf) {
 }
 
 TEST(TumFormat, MalformedInputNamesFileAndLine) {
-  const auto read = [](const TempFile& f) { return [&f]() { readTumTrajectory(f.path()); }; };
-  {
-    const TempFile f("# header\n1 0 0 0 0 0 0 1\n2 0 0 0 0 0 1\n");
-    expectInputError(read(f), f.path(), 3, "expected 8 numbers");
-  }
-  {
-    const TempFile f("1 0 0 0 0 0 0 1 5\n");
-    expectInputError(read(f), f.path(), 1, "found 9");
-  }
-  {
-    const TempFile f("1 0 0 0 0 0 0 1\n2 0 x 0 0 0 0 1\n");
-    expectInputError(read(f), f.path(), 2, "not a number");
-  }
-  {
-    const TempFile f("1 0 0 0 0 0 0 1\n2 0 0 nan 0 0 0 1\n");
-    expectInputError(read(f), f.path(), 2, "not finite");
-  }
-  {
-    const TempFile f("1 0 0 0 0 0 0 1\n2 0 0 0 0 0 0 inf\n");
-    expectInputError(read(f), f.path(), 2, "not finite");
-  }
-  {
-    const TempFile f("1 0 0 1e999 0 0 0 1\n");
-    expectInputError(read(f), f.path(), 1, "out of the range");
-  }
-  {
-    const TempFile f("1 0 0 0 0 0 0 1\n2 0 0 0 0 0 0 0\n");
-    expectInputError(read(f), f.path(), 2, "zero norm");
-  }
-  {
-    const TempFile f("1 0 0 0 0 0 0 1\n3 0 0 0 0 0 0 1\n2 0 0 0 0 0 0 1\n");
-    expectInputError(read(f), f.path(), 3, "backwards");
-  }
-  {
-    const TempFile f("");
-    expectInputError(read(f), f.path(), 0, "empty");
-  }
-  {
-    const TempFile f("# only a comment\n\n");
-    expectInputError(read(f), f.path(), 0, "empty");
-  }
-  {
-    const TempFile f("1.0.0 0 0 0 0 0 0 1\n");
-    expectInputError(read(f), f.path(), 1, "not a number");
-  }
+  const auto read = [](const std::string& path) { readTumTrajectory(path); };
+  expectInputErrorReading(read, "# header\n1 0 0 0 0 0 0 1\n2 0 0 0 0 0 1\n", 3, "expected 8 numbers");
+  expectInputErrorReading(read, "1 0 0 0 0 0 0 1 5\n", 1, "found 9");
+  expectInputErrorReading(read, "1 0 0 0 0 0 0 1\n2 0 x 0 0 0 0 1\n", 2, "not a number");
+  expectInputErrorReading(read, "1 0 0 0 0 0 0 1\n2 0 0 nan 0 0 0 1\n", 2, "not finite");
+  expectInputErrorReading(read, "1 0 0 0 0 0 0 1\n2 0 0 0 0 0 0 inf\n", 2, "not finite");
+  expectInputErrorReading(read, "1 0 0 1e999 0 0 0 1\n", 1, "out of the range");
+  expectInputErrorReading(read, "1 0 0 0 0 0 0 1\n2 0 0 0 0 0 0 0\n", 2, "zero norm");
+  expectInputErrorReading(read, "1 0 0 0 0 0 0 1\n3 0 0 0 0 0 0 1\n2 0 0 0 0 0 0 1\n", 3, "backwards");
+  expectInputErrorReading(read, "", 0, "empty");
+  expectInputErrorReading(read, "# only a comment\n\n", 0, "empty");
+  expectInputErrorReading(read, "1.0.0 0 0 0 0 0 0 1\n", 1, "not a number");
   expectInputError([] { readTumTrajectory("/nonexistent/semslam/traj.txt"); }, "/nonexistent/semslam/traj.txt", 0,
                    "cannot open");
   const std::string dir = std::filesystem::temp_directory_path().string();
@@ -125,35 +94,16 @@ TEST(KittiFormat, ThirteenColumnsCarryATimestamp) {
 }
 
 TEST(KittiFormat, MalformedInputNamesFileAndLine) {
-  const auto read = [](const TempFile& f) { return [&f]() { readKittiTrajectory(f.path()); }; };
-  {
-    const TempFile f("1 0 0 0 0 1 0 0 0 0 1\n");
-    expectInputError(read(f), f.path(), 1, "expected 12 numbers");
-  }
-  {
-    const TempFile f(std::string("# c\n") + kIdentity12 + "\n5 " + kIdentity12 + "\n");
-    expectInputError(read(f), f.path(), 3, "like the first pose line");
-  }
-  {
-    const TempFile f(std::string(kIdentity12) + "\n2 0 0 0 0 1 0 0 0 0 1 0\n");
-    expectInputError(read(f), f.path(), 2, "not a rotation");
-  }
-  {
-    const TempFile f(std::string(kIdentity12) + "\n1 0 0 0 0 1 0 0 0 0 -1 0\n");  // det -1
-    expectInputError(read(f), f.path(), 2, "not a rotation");
-  }
-  {
-    const TempFile f("2 " + std::string(kIdentity12) + "\n1 " + kIdentity12 + "\n");
-    expectInputError(read(f), f.path(), 2, "backwards");
-  }
-  {
-    const TempFile f(std::string(kIdentity12) + "\n1 0 0 0 0 1 0 0 0 0 1 -nan\n");
-    expectInputError(read(f), f.path(), 2, "not finite");
-  }
-  {
-    const TempFile f("\n\n");
-    expectInputError(read(f), f.path(), 0, "empty");
-  }
+  const auto read = [](const std::string& path) { readKittiTrajectory(path); };
+  expectInputErrorReading(read, "1 0 0 0 0 1 0 0 0 0 1\n", 1, "expected 12 numbers");
+  expectInputErrorReading(read, std::string("# c\n") + kIdentity12 + "\n5 " + kIdentity12 + "\n", 3,
+                          "like the first pose line");
+  expectInputErrorReading(read, std::string(kIdentity12) + "\n2 0 0 0 0 1 0 0 0 0 1 0\n", 2, "not a rotation");
+  // det −1: a reflection.
+  expectInputErrorReading(read, std::string(kIdentity12) + "\n1 0 0 0 0 1 0 0 0 0 -1 0\n", 2, "not a rotation");
+  expectInputErrorReading(read, "2 " + std::string(kIdentity12) + "\n1 " + kIdentity12 + "\n", 2, "backwards");
+  expectInputErrorReading(read, std::string(kIdentity12) + "\n1 0 0 0 0 1 0 0 0 0 1 -nan\n", 2, "not finite");
+  expectInputErrorReading(read, "\n\n", 0, "empty");
 }
 
 TEST(KittiFormat, WriteThenReadIsExact) {
@@ -182,35 +132,14 @@ TEST(EurocFormat, ReadsNanosecondsAndWFirstQuaternionSkippingExtraColumns) {
 }
 
 TEST(EurocFormat, MalformedInputNamesFileAndLine) {
-  const auto read = [](const TempFile& f) { return [&f]() { readEurocTrajectory(f.path()); }; };
-  {
-    const TempFile f("#h\n1,0,0,0,1,0,0\n", ".csv");
-    expectInputError(read(f), f.path(), 2, "at least 8 fields");
-  }
-  {
-    const TempFile f("1,0,0,0,1,0,0,0\n2,0,0,0,1,0,0,0,5\n", ".csv");
-    expectInputError(read(f), f.path(), 2, "like the first data line");
-  }
-  {
-    const TempFile f("1,0,0,0,1,0,0,0\n2,0,,0,1,0,0,0\n", ".csv");
-    expectInputError(read(f), f.path(), 2, "empty");
-  }
-  {
-    const TempFile f("1,0,0,0,1,0,0,0\n2,0,0,0,one,0,0,0\n", ".csv");
-    expectInputError(read(f), f.path(), 2, "not a number");
-  }
-  {
-    const TempFile f("1,0,0,0,1,0,0,0,\n", ".csv");  // trailing delimiter: evo rejects it too
-    expectInputError(read(f), f.path(), 1, "empty");
-  }
-  {
-    const TempFile f("5,0,0,0,1,0,0,0\n4,0,0,0,1,0,0,0\n", ".csv");
-    expectInputError(read(f), f.path(), 2, "backwards");
-  }
-  {
-    const TempFile f("#only a header\n", ".csv");
-    expectInputError(read(f), f.path(), 0, "empty");
-  }
+  const auto read = [](const std::string& path) { readEurocTrajectory(path); };
+  expectInputErrorReading(read, "#h\n1,0,0,0,1,0,0\n", 2, "at least 8 fields", ".csv");
+  expectInputErrorReading(read, "1,0,0,0,1,0,0,0\n2,0,0,0,1,0,0,0,5\n", 2, "like the first data line", ".csv");
+  expectInputErrorReading(read, "1,0,0,0,1,0,0,0\n2,0,,0,1,0,0,0\n", 2, "empty", ".csv");
+  expectInputErrorReading(read, "1,0,0,0,1,0,0,0\n2,0,0,0,one,0,0,0\n", 2, "not a number", ".csv");
+  expectInputErrorReading(read, "1,0,0,0,1,0,0,0,\n", 1, "empty", ".csv");  // trailing delimiter: evo rejects it too
+  expectInputErrorReading(read, "5,0,0,0,1,0,0,0\n4,0,0,0,1,0,0,0\n", 2, "backwards", ".csv");
+  expectInputErrorReading(read, "#only a header\n", 0, "empty", ".csv");
 }
 
 TEST(TrajectoryFormat, ParsesNamesAndDispatches) {

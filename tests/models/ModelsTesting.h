@@ -1,13 +1,17 @@
 #pragma once
 // Helpers shared by the models tests: matrix comparison with a readable failure, and central differences of
-// angle-valued functions (wrapped, so that a result near ±π does not jump by 2π between the two sides).
+// angle-valued functions (wrapped, so that a result near ±π does not jump by 2π between the two sides), and seeded
+// random poses.
 
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <random>
 
 #include "semslam/geometry/Manifold.h"
+#include "semslam/geometry/SE3.h"
 #include "semslam/models/Angle.h"
+#include "semslam/models/Sampling.h"
 
 namespace semslam::test {
 
@@ -39,6 +43,18 @@ Matrix numericalAngleDerivative(const std::function<double(const In&)>& f, const
     J(0, i) = wrapAngle(plus - minus) / (2.0 * h);
   }
   return J;
+}
+
+/// Uniform in [a, b), from uniform01 (Sampling.h).
+inline double uniform(std::mt19937& rng, double a, double b) { return a + (b - a) * uniform01(rng); }
+
+/// A random pose: rotation by an angle uniform in [−3.1, 3.1] about an axis with components uniform in [−1, 1],
+/// translation uniform in [−translation, translation]³.
+inline SE3 randomSE3(std::mt19937& rng, double translation) {
+  const Vector3 axis(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
+  return SE3(SO3::fromAxisAngle(axis, uniform(rng, -3.1, 3.1)),
+             Point3(uniform(rng, -translation, translation), uniform(rng, -translation, translation),
+                    uniform(rng, -translation, translation)));
 }
 
 }  // namespace semslam::test

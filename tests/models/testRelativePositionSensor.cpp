@@ -19,14 +19,8 @@ namespace {
 using test::matricesNear;
 using test::numericalDerivative;
 
-double uniform(std::mt19937& rng, double a, double b) { return a + (b - a) * uniform01(rng); }
-
-SE3 randomSE3(std::mt19937& rng, double translation) {
-  const Vector3 axis(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
-  return SE3(SO3::fromAxisAngle(axis, uniform(rng, -3.1, 3.1)),
-             Point3(uniform(rng, -translation, translation), uniform(rng, -translation, translation),
-                    uniform(rng, -translation, translation)));
-}
+using test::randomSE3;
+using test::uniform;
 
 TEST(RelativePositionSensor2, PredictionWithSensorOffset) {
   // Robot at (1, 1) facing +y, sensor 0.5 m ahead along the body x axis: a point 2 m further ahead is at (2, 0).

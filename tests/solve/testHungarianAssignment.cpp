@@ -75,14 +75,22 @@ void expectConsistent(const Assignment& a, const Matrix& w) {
   EXPECT_NEAR(total, a.totalWeight, 1e-9);
 }
 
+/// A random weight matrix: its row and column counts drawn from `size` (rows first), its entries from `value`,
+/// row by row.
+template <class Size, class Value>
+Matrix randomWeights(std::mt19937& rng, Size& size, Value& value) {
+  const int n = size(rng), m = size(rng);
+  Matrix w(n, m);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j) w(i, j) = value(rng);
+  return w;
+}
+
 TEST(HungarianAssignment, MatchesBruteForceOnSmallIntegerMatricesIncludingTies) {
   std::mt19937 rng(2024);
   std::uniform_int_distribution<int> size(1, 6), value(0, 3);
   for (int trial = 0; trial < 600; ++trial) {
-    const int n = size(rng), m = size(rng);
-    Matrix w(n, m);
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < m; ++j) w(i, j) = value(rng);
+    const Matrix w = randomWeights(rng, size, value);
     const Assignment a = maximumWeightAssignment(w);
     const BruteForce b = bruteForce(w);
     expectConsistent(a, w);
@@ -96,10 +104,7 @@ TEST(HungarianAssignment, MatchesBruteForceOnSmallRealMatricesWithNegativeWeight
   std::uniform_int_distribution<int> size(1, 7);
   std::uniform_real_distribution<double> value(-5.0, 5.0);
   for (int trial = 0; trial < 300; ++trial) {
-    const int n = size(rng), m = size(rng);
-    Matrix w(n, m);
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < m; ++j) w(i, j) = value(rng);
+    const Matrix w = randomWeights(rng, size, value);
     const Assignment a = maximumWeightAssignment(w);
     const BruteForce b = bruteForce(w);
     expectConsistent(a, w);

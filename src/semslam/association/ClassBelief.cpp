@@ -47,7 +47,7 @@ void ClassBelief::update(const Vector& likelihoods, double weight) {
     }
   }
   if (weight == 0.0) return;
-  // Bayes' posterior in log space: log P(c | l) + log P(z | c) − log P(z | l).
+  // Bayes' posterior in log space (B, sec. IV-B): log P(c | l) + log P(z | c) − log P(z | l).
   Vector bayes = logProbabilities_ + likelihoods.array().log().matrix();
   const double maximum = bayes.maxCoeff();
   if (!std::isfinite(maximum)) {

@@ -75,7 +75,7 @@ SampledLikelihood importanceSampledLikelihood(std::span<const FactorPtr> factors
     for (int i = 0; i < layout.total; ++i) n(i) = standardNormal(rng);
     const Vector delta = proposal.mean + proposal.root * n;
     retractInto(sample, values, marginal, layout, delta);
-    // log p(z | X_s) + log N(δ_s; 0, Σ) − log N(δ_s; δ', Σ')
+    // The integrand of (A, eq. 16) at X_s over the proposal: log p(z | X_s) + log N(δ_s; 0, Σ) − log N(δ_s; δ', Σ')
     double logTerm = -normalizers - proposal.halfLogDetS + 0.5 * n.squaredNorm() -
                      0.5 * prior.matrixL().solve(delta).squaredNorm();
     for (const FactorPtr& factor : factors) logTerm -= 0.5 * factor->chi2(sample);

@@ -14,6 +14,7 @@ LinearizedLikelihood linearizedLikelihood(std::span<const FactorPtr> factors, co
   const TangentLayout layout(marginal, values);
   const StackedLinearization stacked = stackFactors(factors, values, marginal, layout);
 
+  // The closed form log N(z; h(X̄), H Σ Hᵀ + Σ_z) (B, sec. IV-B) of the integral (A, eq. 16-17), whitened:
   // S = J Σ Jᵀ + I; log p = −½ r̄ᵀ S⁻¹ r̄ − ½ log det S − ½ m log 2π + log|R|, and
   // −½ m log 2π + log|R| = −Σ_f logNormalizer_f.
   Matrix S = stacked.J * marginal.covariance() * stacked.J.transpose();
@@ -44,6 +45,7 @@ SampledLikelihood sampledLikelihood(std::span<const FactorPtr> factors, const Va
   // The sample only needs the marginal's variables: a small Values, perturbed in place per draw.
   Values sample;
   for (Key key : marginal.keys()) sample.insert(key, values.value(key));
+  // p(z | H) ≈ (1/n) Σ_s P(Z | X_s) P(β | X_s), X_s drawn from the joint marginal (A, eq. 16-17).
   std::vector<double> logTerms;
   logTerms.reserve(samples);
   Vector n(layout.total);

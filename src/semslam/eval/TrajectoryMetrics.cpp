@@ -30,6 +30,14 @@ std::vector<PoseType> posesOf(const std::vector<Pose>& poses, const char* what) 
   return out;
 }
 
+/// The translations of `poses` as the columns of a D×n matrix, in order.
+template <int D, class PoseType>
+Eigen::Matrix<double, D, Eigen::Dynamic> positionColumns(const std::vector<PoseType>& poses) {
+  Eigen::Matrix<double, D, Eigen::Dynamic> columns(D, static_cast<Eigen::Index>(poses.size()));
+  for (std::size_t i = 0; i < poses.size(); ++i) columns.col(static_cast<Eigen::Index>(i)) = poses[i].translation();
+  return columns;
+}
+
 void summarise(TrajectoryErrors& result) {
   result.translation = computeErrorStatistics(result.translationErrors);
   result.rotation = computeErrorStatistics(result.rotationErrors);
@@ -39,24 +47,12 @@ void summarise(TrajectoryErrors& result) {
 
 SimilarityTransform alignPlanarTrajectory(const std::vector<SE2>& estimate, const std::vector<SE2>& reference) {
   checkSizes(estimate, reference);
-  Eigen::Matrix2Xd x(2, static_cast<Eigen::Index>(estimate.size()));
-  Eigen::Matrix2Xd y(2, static_cast<Eigen::Index>(reference.size()));
-  for (std::size_t i = 0; i < estimate.size(); ++i) {
-    x.col(static_cast<Eigen::Index>(i)) = estimate[i].translation();
-    y.col(static_cast<Eigen::Index>(i)) = reference[i].translation();
-  }
-  return planarRigidAlignment(x, y);
+  return planarRigidAlignment(positionColumns<2>(estimate), positionColumns<2>(reference));
 }
 
 SimilarityTransform alignSpatialTrajectory(const std::vector<SE3>& estimate, const std::vector<SE3>& reference) {
   checkSizes(estimate, reference);
-  Eigen::Matrix3Xd x(3, static_cast<Eigen::Index>(estimate.size()));
-  Eigen::Matrix3Xd y(3, static_cast<Eigen::Index>(reference.size()));
-  for (std::size_t i = 0; i < estimate.size(); ++i) {
-    x.col(static_cast<Eigen::Index>(i)) = estimate[i].translation();
-    y.col(static_cast<Eigen::Index>(i)) = reference[i].translation();
-  }
-  return umeyamaAlignment(x, y, false);
+  return umeyamaAlignment(positionColumns<3>(estimate), positionColumns<3>(reference), false);
 }
 
 TrajectoryErrors evaluateTrajectoryErrors(const std::vector<SE2>& estimate, const std::vector<SE2>& reference,

@@ -65,7 +65,7 @@ HybridStepReport HybridBelief::update(const TimeStep& step) {
   report.step = k;
   report.parents = components_.size();
 
-  // 1. Propagate (Alg. 1 line 3).
+  // 1. Propagate (Alg. 1 line 3): b⁻[X_k] = P(x_k | x_k−1, a_k−1) b[X_k−1] (A, eq. 11).
   std::vector<Key> jointKeys{pose};
   for (int j = 0; j < problem_.objects(); ++j) jointKeys.push_back(HybridProblem::objectKey(j));
   std::vector<PropagatedParent> parents(components_.size());
@@ -85,10 +85,10 @@ HybridStepReport HybridBelief::update(const TimeStep& step) {
       propagated->update(motion, predicted);
       parent.smoother = std::move(propagated);
     }
-    parent.joint = parent.smoother->jointMarginal(jointKeys);
+    parent.joint = parent.smoother->jointMarginal(jointKeys);  // marginalised to x_k and the objects (A, eq. 17)
   }
 
-  // 2. PropWeights (lines 4-5).
+  // 2. PropWeights (lines 4-5): the children's weights (A, eq. 15-17).
   std::vector<AssociationCandidate> candidates =
       propagateWeights(problem_, options_, parents, k, step.detections, rng_, report.weights);
 
@@ -98,7 +98,7 @@ HybridStepReport HybridBelief::update(const TimeStep& step) {
   const PruningResult pruned = pruneAndNormalize(logWeights, options_.pruneRatio, options_.maxComponents);
   report.prunedMass = pruned.prunedMass;
 
-  // 4. Observation update of the survivors (lines 9-11).
+  // 4. Observation update of the survivors (lines 9-11): b[X_k] ∝ P(Z_k | X_k, C, β_k) b⁻[X_k] (A, eq. 9-10).
   std::vector<HybridComponent> next;
   for (std::size_t s = 0; s < pruned.kept.size(); ++s) {
     const AssociationCandidate& c = candidates[pruned.kept[s]];

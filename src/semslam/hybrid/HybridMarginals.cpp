@@ -21,8 +21,8 @@ HybridMarginals hybridMarginals(const HybridBelief& belief) {
     h.covariance = c.smoother->marginalCovariance(pose);
     out.components.push_back(std::move(h));
   }
-  out.association = associationMarginal(out.components);
-  if (problem.enumeratesClasses()) {
+  out.association = associationMarginal(out.components);  // P(β_1:k | H_k) = Σ_C w^C_β1:k (A, eq. 8)
+  if (problem.enumeratesClasses()) {  // P(C | H_k) = Σ_β w^C_β1:k per object (A, eq. 7); collapsed: uniform
     const int m = problem.classes();
     out.classes = Matrix::Zero(problem.objects(), m);
     for (const HybridComponent& c : belief.components()) {
@@ -32,6 +32,7 @@ HybridMarginals hybridMarginals(const HybridBelief& belief) {
       }
     }
   }
+  // The mixture Σ w b[x_k] (A, eq. 6) by its first two moments.
   for (const HypothesisComponent& h : out.components) out.mixtureMean += h.weight * std::get<SE2>(h.pose).translation();
   for (const HypothesisComponent& h : out.components) {
     const SE2& x = std::get<SE2>(h.pose);

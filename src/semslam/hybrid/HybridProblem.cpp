@@ -45,6 +45,7 @@ HybridProblem::HybridProblem(const LogHeader& header, bool useSemantics)
 
 Key HybridProblem::objectKey(int object) { return landmarkKey(static_cast<std::uint64_t>(object)); }
 
+// P(x_0) Π_i P(x^o_i) (A, eq. 3); the class prior P(c_i) is a log-constant of the candidates.
 void HybridProblem::priors(FactorGraph& factors, Values& values) const {
   factors.add(factory_.posePriorFactor(poseKey(0), *header_.initialPose));
   values.insert(poseKey(0), factory_.initialPose(header_));
@@ -56,6 +57,7 @@ void HybridProblem::priors(FactorGraph& factors, Values& values) const {
 
 std::vector<FactorPtr> HybridProblem::detectionFactors(Key pose, int object, const Detection& detection,
                                                        int classIndex) const {
+  // P(z_geo | x_k, x^o) · P(z_sem | x_k, x^o, c) (A, eq. 10); the semantic part by the viewpoint model (A, eq. 2, 18).
   std::vector<FactorPtr> factors{factory_.detectionFactor(pose, objectKey(object), detection)};
   if (semantic_ == SemanticModelKind::Viewpoint) {
     if (!detection.classVector) throw InputError("hybrid belief: a detection has no class scores");

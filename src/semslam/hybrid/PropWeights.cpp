@@ -62,7 +62,7 @@ AssociationCandidate extend(const AssociationCandidate& partial, const HybridPro
   AssociationCandidate child = partial;
   child.beta.push_back(object);
   const std::vector<FactorPtr>& factors = cache.get(i, object, classIndex);
-  child.factors.insert(child.factors.end(), factors.begin(), factors.end());
+  child.factors.insert(child.factors.end(), factors.begin(), factors.end());  // P(z_geo) · P(z_sem) (A, eq. 10)
   child.gateFactors.push_back(cache.gate(i, object));
   child.analyticFactors.push_back(child.gateFactors.back());
   child.analyticFactors.insert(child.analyticFactors.end(), factors.begin() + 1, factors.end());  // semantic part
@@ -70,7 +70,7 @@ AssociationCandidate extend(const AssociationCandidate& partial, const HybridPro
     child.logConstant += problem.semanticLogConstant(detection, classIndex);
     if (newObject) {
       child.classes[object] = classIndex;
-      child.logConstant -= std::log(static_cast<double>(problem.classes()));
+      child.logConstant -= std::log(static_cast<double>(problem.classes()));  // class prior P(c) = 1/M (A, eq. 3)
     }
   }
   return child;
@@ -87,14 +87,30 @@ std::vector<int> classChoices(const HybridProblem& problem, const AssociationCan
 
 bool uses(const std::vector<int>& beta, int object) { return std::find(beta.begin(), beta.end(), object) != beta.end(); }
 
+/// Calls `visit` with every one-detection extension of `partial` (A sec. III: β_k assigns the step's detections to
+/// distinct objects): detection i → each object that `partial` does not use yet, with each of its class choices,
+/// in order of object, then class.
+template <class Visit>
+void forEachExtension(const AssociationCandidate& partial, const HybridProblem& problem, FactorCache& cache,
+                      const Detection& detection, int i, Visit&& visit) {
+  for (int object = 0; object < problem.objects(); ++object) {
+    if (uses(partial.beta, object)) continue;
+    const bool isNew = problem.enumeratesClasses() && partial.classes[object] < 0;
+    for (int c : classChoices(problem, partial, object)) {
+      visit(extend(partial, problem, cache, detection, i, object, c, isNew));
+    }
+  }
+}
+
 void linearize(AssociationCandidate& candidate, const PropagatedParent& parent, Key pose) {
+  // w_β1:k−1 comes out of the integral (A, eq. 16).
   const double base = std::log(parent.component->weight) + candidate.logConstant;
   if (candidate.factors.empty()) {
     candidate.linearizedLogWeight = candidate.gateLogWeight = base;
     candidate.innovationChi2 = 0.0;
     return;
   }
-  const JointMarginal marginal = parent.joint.restrictedTo(integralKeys(pose, candidate.beta));
+  const JointMarginal marginal = parent.joint.restrictedTo(integralKeys(pose, candidate.beta));  // (A, eq. 17)
   const Values& estimate = parent.smoother->estimate();
   const LinearizedLikelihood gate = linearizedLikelihood(candidate.gateFactors, estimate, marginal);
   candidate.gateLogWeight = base + gate.logLikelihood;
@@ -125,13 +141,8 @@ std::vector<AssociationCandidate> wholeAssociations(const HybridProblem& problem
     for (int i = 0; i < static_cast<int>(detections.size()); ++i) {
       std::vector<AssociationCandidate> next;
       for (const AssociationCandidate& partial : partials) {
-        for (int object = 0; object < problem.objects(); ++object) {
-          if (uses(partial.beta, object)) continue;
-          const bool isNew = problem.enumeratesClasses() && partial.classes[object] < 0;
-          for (int c : classChoices(problem, partial, object)) {
-            next.push_back(extend(partial, problem, cache, detections[i], i, object, c, isNew));
-          }
-        }
+        forEachExtension(partial, problem, cache, detections[i], i,
+                         [&](AssociationCandidate child) { next.push_back(std::move(child)); });
       }
       partials = std::move(next);
     }
@@ -159,18 +170,13 @@ std::vector<AssociationCandidate> oneDetectionAtATime(const HybridProblem& probl
   for (int i = 0; i < static_cast<int>(detections.size()); ++i) {
     std::vector<AssociationCandidate> next;
     for (const AssociationCandidate& partial : partials) {
-      for (int object = 0; object < problem.objects(); ++object) {
-        if (uses(partial.beta, object)) continue;
-        const bool isNew = problem.enumeratesClasses() && partial.classes[object] < 0;
-        for (int c : classChoices(problem, partial, object)) {
-          AssociationCandidate child =
-              extend(partial, problem, caches[partial.parent], detections[i], i, object, c, isNew);
-          linearize(child, parents[partial.parent], pose);
-          int dimension = 0;
-          for (const FactorPtr& f : child.gateFactors) dimension += f->errorDimension();
-          if (child.innovationChi2 <= compatibility.threshold(dimension)) next.push_back(std::move(child));
-        }
-      }
+      forEachExtension(partial, problem, caches[partial.parent], detections[i], i, [&](AssociationCandidate child) {
+        linearize(child, parents[partial.parent], pose);
+        int dimension = 0;
+        for (const FactorPtr& f : child.gateFactors) dimension += f->errorDimension();
+        // Joint compatibility: the stacked innovation passes the χ² test at its dimension.
+        if (child.innovationChi2 <= compatibility.threshold(dimension)) next.push_back(std::move(child));
+      });
     }
     if (next.empty()) {  // no partial association can take detection i: drop it everywhere
       ++report.droppedDetections;
@@ -231,9 +237,9 @@ std::vector<AssociationCandidate> propagateWeights(const HybridProblem& problem,
     } else {
       const PropagatedParent& parent = parents[c.parent];
       const std::vector<Key> keys = integralKeys(pose, c.beta);
-      const JointMarginal marginal = parent.joint.restrictedTo(keys);
+      const JointMarginal marginal = parent.joint.restrictedTo(keys);  // b⁻[x_k, X^o_β] (A, eq. 17)
       SampleWeight visibility;
-      if (options.visibility) {
+      if (options.visibility) {  // the object observation model P(β_k | x_k, X^o_β) (A, eq. 14, 16)
         visibility = [&problem, &keys](const Values& sample) {
           const SE2& robot = sample.at<SE2>(keys[0]);
           std::vector<Point2> positions;
@@ -251,6 +257,7 @@ std::vector<AssociationCandidate> propagateWeights(const HybridProblem& problem,
               ? importanceSampledLikelihood(c.factors, parent.smoother->estimate(), marginal, options.samples, rng,
                                             visibility, ImportanceProposal{options.importanceIterations})
               : sampledLikelihood(c.factors, parent.smoother->estimate(), marginal, options.samples, rng, visibility);
+      // w_β1:k ∝ w_β1:k−1 · (1/n_s) Σ_s P(Z_k | X_s) P(β_k | X_s) (A, eq. 16-17)
       c.logWeight = std::log(parent.component->weight) + likelihood.logLikelihood + c.logConstant;
       c.relativeStandardError = likelihood.relativeStandardError;
       ++report.sampled;

@@ -10,6 +10,7 @@
 #include "semslam/io/PoseGraphBuilder.h"
 #include "semslam/io/PoseGraphReaders.h"
 #include "semslam/io/TriangularEntries.h"
+#include "semslam/io/UnreadRecord.h"
 
 namespace semslam {
 
@@ -42,17 +43,16 @@ SO3 readQuaternion(const LineReader& reader, std::size_t first) {
 }
 
 [[noreturn]] void unknownRecord(const LineReader& reader) {
-  const std::string tag(reader.tag());
-  if (tag == "VERTEX2" || tag == "EDGE2" || tag == "VERTEX" || tag == "EDGE" || tag == "EQUIV" || tag == "ODOMETRY" ||
-      tag == "LANDMARK") {
-    reader.fail("unsupported record type '" + tag + "' in a g2o file: it is a TORO or iSAM record; read the file " +
-                "as toro or isam (g2o records read here: " + kSupported + ")");
-  }
+  const std::string_view tag = reader.tag();
   if (startsWith(tag, "VERTEX_") || startsWith(tag, "EDGE_") || startsWith(tag, "PARAMS_") ||
       startsWith(tag, "CACHE_")) {
-    reader.fail("unsupported g2o record type '" + tag + "' (g2o records read here: " + kSupported + ")");
+    reader.fail("unsupported g2o record type '" + std::string(tag) + "' (g2o records read here: " + kSupported + ")");
   }
-  reader.fail("unknown record type '" + tag + "' (g2o records read here: " + kSupported + ")");
+  const auto isToroOrIsamRecord = [](std::string_view t) {
+    return t == "VERTEX2" || t == "EDGE2" || t == "VERTEX" || t == "EDGE" || t == "EQUIV" || t == "ODOMETRY" ||
+           t == "LANDMARK";
+  };
+  failUnreadRecord(reader, "g2o", kSupported, {{"TORO or iSAM", "toro or isam", isToroOrIsamRecord}});
 }
 
 }  // namespace

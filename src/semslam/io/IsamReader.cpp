@@ -13,6 +13,7 @@
 #include "semslam/io/PoseGraphBuilder.h"
 #include "semslam/io/PoseGraphReaders.h"
 #include "semslam/io/TriangularEntries.h"
+#include "semslam/io/UnreadRecord.h"
 
 namespace semslam {
 
@@ -29,15 +30,8 @@ constexpr const char* kSupported = "EDGE2 ODOMETRY LANDMARK";
   if (tag == "EDGE3" || tag == "POINT3") {
     reader.fail("unsupported iSAM record type '" + tag + "' (3D; iSAM records read here: " + kSupported + ")");
   }
-  if (tag == "VERTEX2" || tag == "VERTEX" || tag == "EQUIV") {
-    reader.fail("unsupported record type '" + tag + "' in an iSAM file: it is a TORO record; read the file as toro " +
-                "(iSAM records read here: " + kSupported + ")");
-  }
-  if (tag.substr(0, 7) == "VERTEX_" || tag.substr(0, 5) == "EDGE_" || tag == "FIX") {
-    reader.fail("unsupported record type '" + tag + "' in an iSAM file: it is a g2o record; read the file as g2o " +
-                "(iSAM records read here: " + kSupported + ")");
-  }
-  reader.fail("unknown record type '" + tag + "' (iSAM records read here: " + kSupported + ")");
+  const auto isToroRecord = [](std::string_view t) { return t == "VERTEX2" || t == "VERTEX" || t == "EQUIV"; };
+  failUnreadRecord(reader, "iSAM", kSupported, {{"TORO", "toro", isToroRecord}, {"g2o", "g2o", isG2oRecordType}});
 }
 
 }  // namespace

@@ -4,12 +4,12 @@
 #include <array>
 #include <climits>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <utility>
 #include <vector>
 
+#include "semslam/core/ExactNumber.h"
 #include "semslam/io/MeasurementLogFile.h"
 
 namespace semslam {
@@ -68,12 +68,6 @@ Enum enumFromJson(const JsonField& field, const std::array<std::pair<Enum, std::
   field.fail("unknown " + std::string(what) + " '" + text + "' (expected one of: " + accepted + ")");
 }
 
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  return text;
-}
-
 // ---- poses and landmark states ----
 
 const char* poseLayout(int dimension) { return dimension == 2 ? "[x, y, theta]" : "[x, y, z, qx, qy, qz, qw]"; }
@@ -85,7 +79,8 @@ int tangentDimension(int dimension) { return dimension == 2 ? 3 : 6; }
 void checkQuaternion(const JsonField& field, const Vector& v) {
   const double norm = v.segment<4>(3).norm();
   if (!(std::abs(norm - 1.0) <= kQuaternionNormTolerance)) {
-    field.fail("the quaternion (qx, qy, qz, qw) must have norm 1 (within 1e-6), found norm " + number(norm));
+    field.fail("the quaternion (qx, qy, qz, qw) must have norm 1 (within 1e-6), found norm " +
+               seventeenDigitNumber(norm));
   }
 }
 
@@ -221,7 +216,8 @@ ClassifierModelSpec classifierFromJson(const JsonField& field, int classes) {
       field.requireObject({"kind", "misclassification"}, {"table"});
       spec.misclassification = field["misclassification"].number();
       if (spec.misclassification < 0.0 || spec.misclassification > 1.0) {
-        field["misclassification"].fail("a probability must be in [0, 1], found " + number(spec.misclassification));
+        field["misclassification"].fail("a probability must be in [0, 1], found " +
+                                        seventeenDigitNumber(spec.misclassification));
       }
       if (classes == 1 && spec.misclassification != 0.0) {
         field["misclassification"].fail("with 1 class there is no other class to confuse it with: must be 0");
@@ -232,10 +228,11 @@ ClassifierModelSpec classifierFromJson(const JsonField& field, int classes) {
       field.requireObject({"kind", "alpha", "sharpness"}, {"table"});
       spec.alpha = field["alpha"].number();
       if (spec.alpha < 0.0 || spec.alpha > 1.0) {
-        field["alpha"].fail("the viewpoint dependency must be in [0, 1], found " + number(spec.alpha));
+        field["alpha"].fail("the viewpoint dependency must be in [0, 1], found " + seventeenDigitNumber(spec.alpha));
       }
       spec.sharpness = field["sharpness"].number();
-      if (!(spec.sharpness > 0.0)) field["sharpness"].fail("must be positive, found " + number(spec.sharpness));
+      if (!(spec.sharpness > 0.0))
+        field["sharpness"].fail("must be positive, found " + seventeenDigitNumber(spec.sharpness));
       break;
     }
   }
@@ -281,12 +278,14 @@ SensorSpec sensorFromJson(const JsonField& field, int dimension) {
   if (field.has("body_to_sensor")) sensor.bodyToSensor = poseFromJson(field["body_to_sensor"], dimension);
   if (field.has("max_range")) {
     sensor.maxRange = field["max_range"].number();
-    if (sensor.maxRange < 0.0) field["max_range"].fail("must be >= 0 (0: unlimited), found " + number(sensor.maxRange));
+    if (sensor.maxRange < 0.0)
+      field["max_range"].fail("must be >= 0 (0: unlimited), found " + seventeenDigitNumber(sensor.maxRange));
   }
   if (field.has("field_of_view")) {
     sensor.fieldOfView = field["field_of_view"].number();
     if (sensor.fieldOfView < 0.0 || sensor.fieldOfView > 2.0 * std::numbers::pi) {
-      field["field_of_view"].fail("must be in [0, 2 pi] radians (0: all around), found " + number(sensor.fieldOfView));
+      field["field_of_view"].fail("must be in [0, 2 pi] radians (0: all around), found " +
+                                  seventeenDigitNumber(sensor.fieldOfView));
     }
   }
   return sensor;
@@ -488,7 +487,7 @@ Detection StepParser::parseDetection(const JsonField& field) const {
       covarianceSize = 3;
       covarianceLayout = "range, bearing, elevation";
       if (std::abs(detection.geometry(2)) > 0.5 * std::numbers::pi) {
-        geometry.fail("the elevation must be in [-pi/2, pi/2], found " + number(detection.geometry(2)));
+        geometry.fail("the elevation must be in [-pi/2, pi/2], found " + seventeenDigitNumber(detection.geometry(2)));
       }
       break;
     case SensorKind::RelativePosition:
@@ -505,7 +504,7 @@ Detection StepParser::parseDetection(const JsonField& field) const {
   }
   if ((header_.sensor.kind == SensorKind::RangeBearing || header_.sensor.kind == SensorKind::RangeBearingElevation) &&
       !(detection.geometry(0) > 0.0)) {
-    geometry.fail("the range must be positive, found " + number(detection.geometry(0)));
+    geometry.fail("the range must be positive, found " + seventeenDigitNumber(detection.geometry(0)));
   }
   detection.covariance = field["covariance"].covariance(covarianceSize, covarianceLayout);
 
@@ -519,12 +518,13 @@ Detection StepParser::parseDetection(const JsonField& field) const {
     if (header_.semantic == SemanticKind::Probabilities) {
       for (Eigen::Index i = 0; i < v.size(); ++i) {
         if (v(i) < 0.0) {
-          vector.fail("probabilities must be non-negative, found " + number(v(i)) + " for class " + std::to_string(i));
+          vector.fail("probabilities must be non-negative, found " + seventeenDigitNumber(v(i)) + " for class " +
+                      std::to_string(i));
         }
       }
       const double sum = v.sum();
       if (!(std::abs(sum - 1.0) <= kProbabilitySumTolerance)) {
-        vector.fail("probabilities must sum to 1 (within 1e-6), found a sum of " + number(sum));
+        vector.fail("probabilities must sum to 1 (within 1e-6), found a sum of " + seventeenDigitNumber(sum));
       }
     }
     detection.classVector = v;
@@ -562,8 +562,8 @@ TimeStep StepParser::parse(const JsonField& record) {
   TimeStep step;
   step.time = record["time"].number();
   if (previousTime_ && !(step.time > *previousTime_)) {
-    record["time"].fail("time " + number(step.time) + " is not after the previous step's time " +
-                        number(*previousTime_) + " (times must increase strictly)");
+    record["time"].fail("time " + seventeenDigitNumber(step.time) + " is not after the previous step's time " +
+                        seventeenDigitNumber(*previousTime_) + " (times must increase strictly)");
   }
   const int dimension = header_.dimension;
   if (steps_ == 0 && record.has("odometry")) {

@@ -91,10 +91,4 @@ std::vector<NumericRow> readNumericTable(const std::string& path, Separator sepa
   return rows;
 }
 
-std::string formatNumber(double value) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
-  return std::string(buffer, result.ptr);
-}
-
 }  // namespace semslam

@@ -29,7 +29,4 @@ struct NumericRow {
 /// Parses every data line of `path`.
 std::vector<NumericRow> readNumericTable(const std::string& path, Separator separator);
 
-/// The shortest decimal text that reads back as exactly `value` (for the trajectory writers).
-std::string formatNumber(double value);
-
 }  // namespace semslam

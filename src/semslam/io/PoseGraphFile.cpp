@@ -1,9 +1,9 @@
 #include "semslam/io/PoseGraphFile.h"
 
-#include <charconv>
 #include <cmath>
 #include <stdexcept>
 
+#include "semslam/core/ExactNumber.h"
 #include "semslam/factors/BetweenFactor.h"
 #include "semslam/factors/RelativePointFactor.h"
 #include "semslam/io/AtomicFile.h"
@@ -50,10 +50,8 @@ class Record {
     if (!std::isfinite(value)) {
       throw std::invalid_argument("writeG2o: non-finite number in record '" + text_ + " ...'");
     }
-    char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
     text_ += ' ';
-    text_.append(buffer, result.ptr);
+    text_ += shortestExactNumber(value);
     return *this;
   }
 

@@ -1,23 +1,16 @@
 #include "semslam/io/RunFolder.h"
 
-#include <cstdio>
 #include <filesystem>
 #include <ostream>
 
+#include "semslam/core/ExactNumber.h"
 #include "semslam/eval/LandmarkMetrics.h"
-#include "semslam/io/TumFormat.h"
 #include "semslam/io/AtomicFile.h"
+#include "semslam/io/TumFormat.h"
 
 namespace semslam {
 
 namespace {
-
-/// Shortest decimal form that reads back to the same double.
-std::string number(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", value);
-  return buffer;
-}
 
 std::string truthField(const std::optional<int>& truth) {
   if (!truth) return "";
@@ -25,7 +18,7 @@ std::string truthField(const std::optional<int>& truth) {
 }
 
 void writePositionColumns(std::ostream& out, const Vector& position) {
-  for (int i = 0; i < position.size(); ++i) out << "," << number(position(i));
+  for (int i = 0; i < position.size(); ++i) out << "," << seventeenDigitNumber(position(i));
 }
 
 }  // namespace
@@ -50,7 +43,7 @@ void writeRunFolder(const std::string& directory, const RunOutput& run) {
       out << landmark.id;
       writePositionColumns(out, landmark.position);
       out << "," << landmark.classIndex << ","
-          << (landmark.classIndex >= 0 ? number(landmark.classProbability) : "") << "\n";
+          << (landmark.classIndex >= 0 ? seventeenDigitNumber(landmark.classProbability) : "") << "\n";
     }
   });
   if (!run.landmarkTruth.empty()) {
@@ -67,13 +60,14 @@ void writeRunFolder(const std::string& directory, const RunOutput& run) {
     out << "kind,id,cxx,cxy,cyy\n";
     for (std::size_t i = 0; i < run.posePositionCovariances.size(); ++i) {
       const Matrix& c = run.posePositionCovariances[i];
-      out << "pose," << i << "," << number(c(0, 0)) << "," << number(c(0, 1)) << "," << number(c(1, 1)) << "\n";
+      out << "pose," << i << "," << seventeenDigitNumber(c(0, 0)) << "," << seventeenDigitNumber(c(0, 1)) << ","
+          << seventeenDigitNumber(c(1, 1)) << "\n";
     }
     for (const RunLandmark& landmark : run.landmarks) {
       if (!landmark.positionCovariance) continue;
       const Matrix& c = *landmark.positionCovariance;
-      out << "landmark," << landmark.id << "," << number(c(0, 0)) << "," << number(c(0, 1)) << ","
-          << number(c(1, 1)) << "\n";
+      out << "landmark," << landmark.id << "," << seventeenDigitNumber(c(0, 0)) << "," << seventeenDigitNumber(c(0, 1))
+          << "," << seventeenDigitNumber(c(1, 1)) << "\n";
     }
   });
   if (!run.associations.empty()) {
@@ -81,7 +75,7 @@ void writeRunFolder(const std::string& directory, const RunOutput& run) {
       out << "step,detection,landmark,weight,truth\n";
       for (const AssociationRecord& a : run.associations) {
         out << a.step << "," << a.detection << "," << (a.landmark ? std::to_string(*a.landmark) : "null") << ","
-            << number(a.weight) << "," << truthField(a.truth) << "\n";
+            << seventeenDigitNumber(a.weight) << "," << truthField(a.truth) << "\n";
       }
     });
   }

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "semslam/core/ExactNumber.h"
 #include "semslam/io/AtomicFile.h"
 #include "semslam/core/InputError.h"
 #include "semslam/io/JsonField.h"
@@ -122,10 +123,9 @@ void readSensor(const JsonField& field, Aliased2dSensor& sensor) {
 std::string number(double value) {
   if (value == 0.0) return "0";  // also -0
   // The shortest text that reads back to the same double; plain decimals (0.0005, not 5e-04) while they stay short.
-  char buffer[400];
-  const auto shortest = std::to_chars(buffer, buffer + sizeof buffer, value);
-  std::string text(buffer, shortest.ptr);
+  std::string text = shortestExactNumber(value);
   if (text.find('e') != std::string::npos) {
+    char buffer[400];
     const auto fixed = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed);
     if (fixed.ec == std::errc() && fixed.ptr - buffer <= 12) text.assign(buffer, fixed.ptr);
   }

@@ -14,6 +14,7 @@
 #include "semslam/factors/BetweenFactor.h"
 #include "semslam/io/PoseGraphBuilder.h"
 #include "semslam/io/PoseGraphReaders.h"
+#include "semslam/io/UnreadRecord.h"
 
 namespace semslam {
 
@@ -44,15 +45,8 @@ Matrix toroInformation(const std::vector<double>& e) {
   if (tag == "VERTEX3" || tag == "EDGE3") {
     reader.fail("unsupported record type '" + tag + "' (3D TORO; TORO records read here: " + kSupported + ")");
   }
-  if (tag == "ODOMETRY" || tag == "LANDMARK") {
-    reader.fail("unsupported record type '" + tag + "' in a TORO file: it is an iSAM record; read the file as isam " +
-                "(TORO records read here: " + kSupported + ")");
-  }
-  if (tag.substr(0, 7) == "VERTEX_" || tag.substr(0, 5) == "EDGE_" || tag == "FIX") {
-    reader.fail("unsupported record type '" + tag + "' in a TORO file: it is a g2o record; read the file as g2o " +
-                "(TORO records read here: " + kSupported + ")");
-  }
-  reader.fail("unknown record type '" + tag + "' (TORO records read here: " + kSupported + ")");
+  const auto isIsamRecord = [](std::string_view t) { return t == "ODOMETRY" || t == "LANDMARK"; };
+  failUnreadRecord(reader, "TORO", kSupported, {{"iSAM", "isam", isIsamRecord}, {"g2o", "g2o", isG2oRecordType}});
 }
 
 }  // namespace

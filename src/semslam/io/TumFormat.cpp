@@ -3,35 +3,26 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "semslam/io/NumericTable.h"
+#include "semslam/io/TrajectoryTable.h"
+#include "semslam/core/ExactNumber.h"
 #include "semslam/core/InputError.h"
 
 namespace semslam {
 
 Trajectory readTumTrajectory(const std::string& path) {
-  const std::vector<NumericRow> rows = readNumericTable(path, Separator::Whitespace);
-  if (rows.empty()) throw InputError(path, 0, "no poses (empty TUM trajectory file)");
-  std::vector<double> stamps;
-  std::vector<SE3> poses;
-  stamps.reserve(rows.size());
-  poses.reserve(rows.size());
-  for (const NumericRow& row : rows) {
-    const std::vector<double>& v = row.values;
+  TrajectoryRowFormat tum;
+  tum.separator = Separator::Whitespace;
+  tum.emptyFileProblem = "no poses (empty TUM trajectory file)";
+  tum.checkFields = [](const std::vector<double>& v, std::size_t) {
     if (v.size() != 8) {
-      throw InputError(path, row.line,
-                       "expected 8 numbers (timestamp tx ty tz qx qy qz qw), found " + std::to_string(v.size()));
+      throw InputError("expected 8 numbers (timestamp tx ty tz qx qy qz qw), found " + std::to_string(v.size()));
     }
-    if (!stamps.empty() && v[0] < stamps.back()) {
-      throw InputError(path, row.line, "timestamp goes backwards (smaller than the previous line's)");
-    }
-    try {
-      poses.push_back(poseFromPositionQuaternion(Vector3(v[1], v[2], v[3]), v[7], v[4], v[5], v[6]));
-    } catch (const InputError& error) {
-      throw InputError(path, row.line, error.problem());
-    }
-    stamps.push_back(v[0]);
-  }
-  return Trajectory(std::move(stamps), std::move(poses));
+  };
+  tum.timestamp = [](const std::vector<double>& v) { return std::optional<double>(v[0]); };
+  tum.pose = [](const std::vector<double>& v) {
+    return poseFromPositionQuaternion(Vector3(v[1], v[2], v[3]), v[7], v[4], v[5], v[6]);
+  };
+  return readTrajectoryTable(path, tum);
 }
 
 void writeTumTrajectory(const std::string& path, const Trajectory& trajectory) {
@@ -40,9 +31,9 @@ void writeTumTrajectory(const std::string& path, const Trajectory& trajectory) {
   for (std::size_t i = 0; i < trajectory.size(); ++i) {
     const Vector3& t = trajectory.position(i);
     const Eigen::Quaterniond q = trajectory.pose(i).rotation().toQuaternion();
-    out << formatNumber(trajectory.timestamp(i)) << ' ' << formatNumber(t.x()) << ' ' << formatNumber(t.y()) << ' '
-        << formatNumber(t.z()) << ' ' << formatNumber(q.x()) << ' ' << formatNumber(q.y()) << ' '
-        << formatNumber(q.z()) << ' ' << formatNumber(q.w()) << '\n';
+    out << shortestExactNumber(trajectory.timestamp(i)) << ' ' << shortestExactNumber(t.x()) << ' ' << shortestExactNumber(t.y()) << ' '
+        << shortestExactNumber(t.z()) << ' ' << shortestExactNumber(q.x()) << ' ' << shortestExactNumber(q.y()) << ' '
+        << shortestExactNumber(q.z()) << ' ' << shortestExactNumber(q.w()) << '\n';
   }
   if (!out) throw std::runtime_error("error writing " + path);
 }

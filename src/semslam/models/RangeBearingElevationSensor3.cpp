@@ -4,16 +4,14 @@
 #include <stdexcept>
 
 #include "semslam/models/Angle.h"
+#include "semslam/models/PointInSensorFrame.h"
 
 namespace semslam {
 
 Vector3 RangeBearingElevationSensor3::predict(const SE3& robot, const Point3& point, Matrix36* Hrobot,
                                               Matrix3* Hpoint) const {
-  Matrix6 sensorWrtRobot;
-  const SE3 sensor = robot.compose(bodyToSensor_, Hrobot ? &sensorWrtRobot : nullptr, nullptr);
-  Matrix36 pWrtSensor;
-  Matrix3 pWrtPoint;
-  const Point3 p = sensor.transformTo(point, Hrobot ? &pWrtSensor : nullptr, Hpoint ? &pWrtPoint : nullptr);
+  const auto seen = pointInSensorFrame(robot, bodyToSensor_, point, Hrobot != nullptr, Hpoint != nullptr);
+  const Point3& p = seen.p;
   const double planarSquared = p.x() * p.x() + p.y() * p.y();
   if (planarSquared == 0.0) throw std::domain_error("range-bearing-elevation: the point is on the sensor's z axis");
   const double planar = std::sqrt(planarSquared);
@@ -24,8 +22,8 @@ Vector3 RangeBearingElevationSensor3::predict(const SE3& robot, const Point3& po
   hWrtP << p.x() / range, p.y() / range, p.z() / range,  //
       -p.y() / planarSquared, p.x() / planarSquared, 0.0,  //
       -p.x() * p.z() / (planar * squaredRange), -p.y() * p.z() / (planar * squaredRange), planar / squaredRange;
-  if (Hrobot) *Hrobot = hWrtP * pWrtSensor * sensorWrtRobot;
-  if (Hpoint) *Hpoint = hWrtP * pWrtPoint;
+  if (Hrobot) *Hrobot = hWrtP * seen.pWrtSensor * seen.sensorWrtRobot;
+  if (Hpoint) *Hpoint = hWrtP * seen.pWrtPoint;
   return Vector3(range, std::atan2(p.y(), p.x()), std::atan2(p.z(), planar));
 }
 

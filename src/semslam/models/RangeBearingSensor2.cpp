@@ -4,24 +4,22 @@
 #include <stdexcept>
 
 #include "semslam/models/Angle.h"
+#include "semslam/models/PointInSensorFrame.h"
 
 namespace semslam {
 
 Vector2 RangeBearingSensor2::predict(const SE2& robot, const Point2& point, Matrix23* Hrobot,
                                      Matrix2* Hpoint) const {
-  Matrix3 sensorWrtRobot;
-  const SE2 sensor = robot.compose(bodyToSensor_, Hrobot ? &sensorWrtRobot : nullptr, nullptr);
-  Matrix23 pWrtSensor;
-  Matrix2 pWrtPoint;
-  const Point2 p = sensor.transformTo(point, Hrobot ? &pWrtSensor : nullptr, Hpoint ? &pWrtPoint : nullptr);
+  const auto seen = pointInSensorFrame(robot, bodyToSensor_, point, Hrobot != nullptr, Hpoint != nullptr);
+  const Point2& p = seen.p;
   const double squaredRange = p.squaredNorm();
   if (squaredRange == 0.0) throw std::domain_error("range-bearing: the point is at the sensor");
   const double range = std::sqrt(squaredRange);
   // ∂(range, bearing)/∂p = [ pᵀ/r ; (−p_y, p_x)/r² ].
   Matrix2 hWrtP;
   hWrtP << p.x() / range, p.y() / range, -p.y() / squaredRange, p.x() / squaredRange;
-  if (Hrobot) *Hrobot = hWrtP * pWrtSensor * sensorWrtRobot;
-  if (Hpoint) *Hpoint = hWrtP * pWrtPoint;
+  if (Hrobot) *Hrobot = hWrtP * seen.pWrtSensor * seen.sensorWrtRobot;
+  if (Hpoint) *Hpoint = hWrtP * seen.pWrtPoint;
   return Vector2(range, std::atan2(p.y(), p.x()));
 }
 

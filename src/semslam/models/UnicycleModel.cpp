@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "semslam/models/OdometryWithFloor.h"
+
 namespace semslam {
 
 namespace {
@@ -44,12 +46,8 @@ Odometry UnicycleModel::integrate(double v, double omega, double dt) const {
   Matrix32 G;
   const SE2 delta = increment(v, omega, dt, &G);
   const Vector2 inputVariances(velocityVariance_, angularVelocityVariance_);
-  Matrix3 covariance = G * inputVariances.asDiagonal() * G.transpose();
-  covariance.diagonal() += dt * floor_;
-  Odometry result;
-  result.increment = delta;
-  result.covariance = 0.5 * (covariance + covariance.transpose());
-  return result;
+  const Matrix3 covariance = G * inputVariances.asDiagonal() * G.transpose();
+  return odometryWithFloor<3>(delta, covariance, dt, floor_);
 }
 
 }  // namespace semslam

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "semslam/models/OdometryWithFloor.h"
+
 namespace semslam {
 
 namespace {
@@ -57,12 +59,8 @@ SE3 VelocityModel3::increment(const Vector3& v, const Vector3& omega, double dt,
 Odometry VelocityModel3::integrate(const Vector3& v, const Vector3& omega, double dt) const {
   Matrix6 G;
   const SE3 delta = increment(v, omega, dt, &G);
-  Matrix6 covariance = G * inputCovariance_ * G.transpose();
-  covariance.diagonal() += dt * floor_;
-  Odometry result;
-  result.increment = delta;
-  result.covariance = 0.5 * (covariance + covariance.transpose());
-  return result;
+  const Matrix6 covariance = G * inputCovariance_ * G.transpose();
+  return odometryWithFloor<6>(delta, covariance, dt, floor_);
 }
 
 }  // namespace semslam

@@ -233,50 +233,16 @@ std::vector<FactorIndex> IncrementalSmoother::update(const FactorGraph& newFacto
 
 std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked,
                                                   const std::vector<bool>& constrainedLast) {
-  // Step 2: remove the cliques of the marked variables and their ancestors.
-  std::vector<int> removedCliques;
-  std::vector<char> isRemoved(cliques_.size(), 0);
-  for (int v : marked) {
-    for (int c = variables_[v].clique; c >= 0 && !isRemoved[c]; c = cliques_[c].parent) {
-      isRemoved[c] = 1;
-      removedCliques.push_back(c);
-    }
-  }
-  // The variables to re-eliminate: the frontals of removed cliques and the marked variables outside the tree.
-  std::vector<int> eliminated;
-  for (int c : removedCliques) {
-    for (int v : cliques_[c].frontals) eliminated.push_back(v);
-  }
-  for (int v : marked) {
-    if (variables_[v].clique < 0) eliminated.push_back(v);
-  }
-  std::vector<int> orphans;
-  for (int c : removedCliques) {
-    for (int child : cliques_[c].children) {
-      if (!isRemoved[child]) orphans.push_back(child);
-    }
-  }
-  roots_.erase(std::remove_if(roots_.begin(), roots_.end(), [&](int c) { return isRemoved[c] != 0; }),
-               roots_.end());
-  for (int c : removedCliques) freeClique(c);
-  for (int v : eliminated) variables_[v].clique = -1;
-  // A variable that lost all its factors leaves the tree, at its estimate.
-  eliminated.erase(std::remove_if(eliminated.begin(), eliminated.end(),
-                                  [&](int v) {
-                                    if (!variables_[v].factors.empty()) return false;
-                                    relinearize(v);
-                                    markStale(v);
-                                    return true;
-                                  }),
-                   eliminated.end());
+  ReeliminatedPart part = detachTop(marked);
+  const std::vector<int>& eliminated = part.variables;
   lastUpdate_.reeliminatedVariables = static_cast<int>(eliminated.size());
   const int m = static_cast<int>(eliminated.size());
   if (m == 0) {
-    if (!orphans.empty()) throw std::logic_error("IncrementalSmoother: orphans without a re-eliminated parent");
+    if (!part.orphans.empty()) throw std::logic_error("IncrementalSmoother: orphans without a re-eliminated parent");
     return {};
   }
 
-  // Local numbering of the re-eliminated variables.
+  // Local numbering of the re-eliminated variables (localIndexOf), for the phases below.
   std::vector<int>& localIndex = scratch_.localIndex;
   localIndex.resize(variables_.size(), -1);
   for (int i = 0; i < m; ++i) localIndex[eliminated[i]] = i;
@@ -287,25 +253,79 @@ std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked
       for (int v : variables) index[v] = -1;
     }
   } resetLocal{localIndex, eliminated};
-  const auto local = [&](int v) { return localIndex[v]; };
 
-  // Step 3: the factors whose variables all lie in the re-eliminated part (the others are summarised in orphans).
-  std::vector<int> gathered;
-  {
-    std::vector<int>& seen = scratch_.slotStamp;
-    seen.resize(slots_.size(), 0);
-    const int stamp = ++scratch_.stamp;
-    for (int v : eliminated) {
-      for (int slot : variables_[v].factors) {
-        if (seen[slot] == stamp) continue;
-        seen[slot] = stamp;
-        bool inside = true;
-        for (int u : slots_[slot].variables) inside = inside && local(u) >= 0;
-        if (inside) gathered.push_back(slot);
-      }
+  const std::vector<int> gathered = gatherFactorsInside(eliminated);
+  linearizeStale(gathered);
+  const std::vector<int> order = orderPart(part, gathered, constrainedLast);
+  std::vector<int> rank(m);  // local index -> position in the elimination order
+  for (int k = 0; k < m; ++k) rank[order[k]] = k;
+  const std::vector<int> cliqueIds = buildCliques(part, order, rank);
+  eliminateCliques(cliqueIds, gathered, rank);
+  return cliqueIds;
+}
+
+// Step 2: removes the cliques of the marked variables and their ancestors. The variables to re-eliminate are the
+// frontals of the removed cliques and the marked variables outside the tree, less those that lost all their
+// factors (they leave the tree at their estimate); the orphans are the removed cliques' children that stay.
+IncrementalSmoother::ReeliminatedPart IncrementalSmoother::detachTop(const std::vector<int>& marked) {
+  std::vector<int> removedCliques;
+  std::vector<char> isRemoved(cliques_.size(), 0);
+  for (int v : marked) {
+    for (int c = variables_[v].clique; c >= 0 && !isRemoved[c]; c = cliques_[c].parent) {
+      isRemoved[c] = 1;
+      removedCliques.push_back(c);
     }
   }
-  for (int slot : gathered) {
+  ReeliminatedPart part;
+  std::vector<int>& eliminated = part.variables;
+  for (int c : removedCliques) {
+    for (int v : cliques_[c].frontals) eliminated.push_back(v);
+  }
+  for (int v : marked) {
+    if (variables_[v].clique < 0) eliminated.push_back(v);
+  }
+  for (int c : removedCliques) {
+    for (int child : cliques_[c].children) {
+      if (!isRemoved[child]) part.orphans.push_back(child);
+    }
+  }
+  roots_.erase(std::remove_if(roots_.begin(), roots_.end(), [&](int c) { return isRemoved[c] != 0; }),
+               roots_.end());
+  for (int c : removedCliques) freeClique(c);
+  for (int v : eliminated) variables_[v].clique = -1;
+  eliminated.erase(std::remove_if(eliminated.begin(), eliminated.end(),
+                                  [&](int v) {
+                                    if (!variables_[v].factors.empty()) return false;
+                                    relinearize(v);
+                                    markStale(v);
+                                    return true;
+                                  }),
+                   eliminated.end());
+  return part;
+}
+
+// Step 3, gathering: the factors whose variables all lie in the re-eliminated part, each once, in order of first
+// touch by `eliminated` (the others are summarised in the orphans' marginals).
+std::vector<int> IncrementalSmoother::gatherFactorsInside(const std::vector<int>& eliminated) {
+  std::vector<int> gathered;
+  std::vector<int>& seen = scratch_.slotStamp;
+  seen.resize(slots_.size(), 0);
+  const int stamp = ++scratch_.stamp;
+  for (int v : eliminated) {
+    for (int slot : variables_[v].factors) {
+      if (seen[slot] == stamp) continue;
+      seen[slot] = stamp;
+      bool inside = true;
+      for (int u : slots_[slot].variables) inside = inside && localIndexOf(u) >= 0;
+      if (inside) gathered.push_back(slot);
+    }
+  }
+  return gathered;
+}
+
+// Step 3, relinearization: each stale factor's information form at θ, JᵀJ and −Jᵀr over its stacked variables.
+void IncrementalSmoother::linearizeStale(const std::vector<int>& slots) {
+  for (int slot : slots) {
     Slot& s = slots_[slot];
     if (!s.linearization) {
       LinearizedFactor& lin = scratch_.linearized;
@@ -325,24 +345,36 @@ std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked
       s.linearization = std::move(contribution);
     }
   }
+}
 
-  // Ordering of the part, with the variables of the new factors last.
+// Step 3, ordering: the part's adjacency (gathered factors and orphan separators, in scratch_.neighbours, which
+// buildCliques reads) ordered by CAMD with the variables of the new factors last; returns order[k] = the local
+// index eliminated k-th.
+std::vector<int> IncrementalSmoother::orderPart(const ReeliminatedPart& part, const std::vector<int>& gathered,
+                                                const std::vector<bool>& constrainedLast) {
+  const int m = static_cast<int>(part.variables.size());
   std::vector<std::vector<int>>& neighbours = reuseLists(scratch_.neighbours, m);
   const auto connect = [&](const std::vector<int>& variables) {
     for (std::size_t p = 1; p < variables.size(); ++p) {
-      const int a = local(variables[p]);
-      for (std::size_t q = 0; q < p; ++q) neighbours[a].push_back(local(variables[q]));
+      const int a = localIndexOf(variables[p]);
+      for (std::size_t q = 0; q < p; ++q) neighbours[a].push_back(localIndexOf(variables[q]));
     }
   };
   for (int slot : gathered) connect(slots_[slot].variables);
-  for (int orphan : orphans) connect(cliques_[orphan].separator);
+  for (int orphan : part.orphans) connect(cliques_[orphan].separator);
   std::vector<bool> last(m);
-  for (int i = 0; i < m; ++i) last[i] = constrainedLast[eliminated[i]];
-  const std::vector<int> order = constrainedOrdering(neighbours, last);
-  std::vector<int> rank(m);  // local index -> position in the elimination order
-  for (int k = 0; k < m; ++k) rank[order[k]] = k;
+  for (int i = 0; i < m; ++i) last[i] = constrainedLast[part.variables[i]];
+  return constrainedOrdering(neighbours, last);
+}
 
-  // Step 4a: symbolic elimination in rank space (SymbolicElimination.h): columns, elimination tree, cliques.
+// Step 4a: symbolic elimination in rank space (SymbolicElimination.h, left in scratch_.symbolic): column
+// structures, elimination tree, cliques. Allocates the new cliques, links them into the tree (roots, parents,
+// children) and hangs each orphan below the clique of its first-ordered separator variable; returns their ids,
+// indexed like scratch_.symbolic's cliques.
+std::vector<int> IncrementalSmoother::buildCliques(const ReeliminatedPart& part, const std::vector<int>& order,
+                                                   const std::vector<int>& rank) {
+  const int m = static_cast<int>(part.variables.size());
+  const std::vector<std::vector<int>>& neighbours = scratch_.neighbours;
   std::vector<std::vector<int>>& later = reuseLists(scratch_.later, m);
   for (int a = 0; a < m; ++a) {
     for (int b : neighbours[a]) {
@@ -361,7 +393,7 @@ std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked
   lastUpdate_.reeliminatedCliques = newCount;
   std::vector<int> cliqueIds(newCount);
   for (int i = 0; i < newCount; ++i) cliqueIds[i] = allocateClique();
-  const auto globalOfRank = [&](int r) { return eliminated[order[r]]; };
+  const auto globalOfRank = [&](int r) { return part.variables[order[r]]; };
   for (int i = 0; i < newCount; ++i) {
     Clique& clique = cliques_[cliqueIds[i]];
     for (int r : symbolic.frontals(i)) {
@@ -379,20 +411,29 @@ std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked
     const int id = cliqueIds[i];
     if (cliques_[id].parent >= 0) cliques_[cliques_[id].parent].children.push_back(id);
   }
-  for (int orphan : orphans) {
+  for (int orphan : part.orphans) {
     int first = m;
-    for (int v : cliques_[orphan].separator) first = std::min(first, rank[local(v)]);
+    for (int v : cliques_[orphan].separator) first = std::min(first, rank[localIndexOf(v)]);
     const int id = cliqueIds[symbolic.cliqueOf(first)];
     cliques_[orphan].parent = id;
     cliques_[id].children.push_back(orphan);
   }
+  return cliqueIds;
+}
 
-  // Step 4b: numeric elimination, children before parents: by increasing last frontal (a child's last frontal
-  // precedes its parent variable, which is a frontal of the parent clique).
+// Step 4b: numeric elimination of the new cliques, children before parents: by increasing last frontal (a child's
+// last frontal precedes its parent variable, which is a frontal of the parent clique). Each gathered factor goes
+// to the clique of its first-ordered variable; each clique's dense system is the extend-add of its factors'
+// information and its children's marginals, and its conditional comes from CliqueConditional::eliminate.
+void IncrementalSmoother::eliminateCliques(const std::vector<int>& cliqueIds, const std::vector<int>& gathered,
+                                           const std::vector<int>& rank) {
+  const SymbolicElimination& symbolic = scratch_.symbolic;
+  const int m = static_cast<int>(rank.size());
+  const int newCount = static_cast<int>(cliqueIds.size());
   std::vector<std::vector<int>>& factorsOfClique = reuseLists(scratch_.factorsOfClique, newCount);
   for (int slot : gathered) {
     int first = m;
-    for (int v : slots_[slot].variables) first = std::min(first, rank[local(v)]);
+    for (int v : slots_[slot].variables) first = std::min(first, rank[localIndexOf(v)]);
     factorsOfClique[symbolic.cliqueOf(first)].push_back(slot);
   }
   std::vector<int> byLastFrontal(newCount);
@@ -448,7 +489,6 @@ std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked
     clique.conditional = std::move(conditional);
     factorEntries_ += entries(clique);
   }
-  return cliqueIds;
 }
 
 void IncrementalSmoother::backSubstitute(const std::vector<int>& newCliques, double wildfireThreshold) {

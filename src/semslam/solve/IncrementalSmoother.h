@@ -137,8 +137,27 @@ class IncrementalSmoother final : public Smoother {
   void attach(int slot);
   void detach(int slot);
   void relinearize(int variable);
+  /// The part of the tree being re-eliminated: its variables (local index i ↔ variables[i]) and the orphans, the
+  /// subtrees left below it with their cached marginals.
+  struct ReeliminatedPart {
+    std::vector<int> variables;
+    std::vector<int> orphans;
+  };
   /// Steps 2–4 of the class comment for the marked variables; returns the new cliques.
   std::vector<int> reeliminate(const std::vector<int>& marked, const std::vector<bool>& constrainedLast);
+  // The phases of reeliminate, in order (comments in the .cpp). Those after detachTop need the local numbering of
+  // the part's variables in scratch_.localIndex.
+  ReeliminatedPart detachTop(const std::vector<int>& marked);
+  std::vector<int> gatherFactorsInside(const std::vector<int>& eliminated);
+  void linearizeStale(const std::vector<int>& slots);
+  std::vector<int> orderPart(const ReeliminatedPart& part, const std::vector<int>& gathered,
+                             const std::vector<bool>& constrainedLast);
+  std::vector<int> buildCliques(const ReeliminatedPart& part, const std::vector<int>& order,
+                                const std::vector<int>& rank);
+  void eliminateCliques(const std::vector<int>& cliqueIds, const std::vector<int>& gathered,
+                        const std::vector<int>& rank);
+  /// Position of variable v in the part being re-eliminated, −1 outside it.
+  int localIndexOf(int v) const { return scratch_.localIndex[v]; }
   void backSubstitute(const std::vector<int>& newCliques, double wildfireThreshold);
   int allocateClique();
   void freeClique(int id);

@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <mutex>
 #include <sstream>
 #include <thread>
 
+#include "semslam/core/ExactNumber.h"
 #include "semslam/eval/HypothesisMetrics.h"
 #include "semslam/run/RunMethod.h"
 #include "semslam/io/AtomicFile.h"
@@ -16,12 +16,6 @@
 
 namespace semslam {
 namespace {
-
-std::string formatNumber(double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.17g", value);
-  return buffer;
-}
 
 bool historyIsTrue(const AssociationHistory& history, const MeasurementLog& log) {
   if (history.size() != log.steps.size()) return false;
@@ -139,13 +133,13 @@ void writeHybridStudy(const std::string& directory, const std::vector<HybridStud
            "disambiguated_at_step,heaviest_history_correct,gate_lost_mass,analytic_total_variation,"
            "sampled_candidates,sampling_s,time_s\n";
     for (const HybridStudyRow& r : rows) {
-      out << formatNumber(r.alpha) << ',' << r.model << ',' << r.track << ',' << formatNumber(r.entropy) << ','
-          << formatNumber(r.detCov) << ',' << formatNumber(r.errWmax) << ',' << formatNumber(r.errWavg) << ','
-          << formatNumber(r.ess) << ',' << r.components << ',' << formatNumber(r.finalNees) << ','
-          << formatNumber(r.assocWeightAtStep) << ',' << (r.disambiguatedAtStep ? 1 : 0) << ','
-          << (r.heaviestHistoryCorrect ? 1 : 0) << ',' << formatNumber(r.gateLostMass) << ','
-          << formatNumber(r.analyticTotalVariation) << ',' << r.sampledCandidates << ','
-          << formatNumber(r.samplingSeconds) << ',' << formatNumber(r.seconds) << '\n';
+      out << seventeenDigitNumber(r.alpha) << ',' << r.model << ',' << r.track << ',' << seventeenDigitNumber(r.entropy) << ','
+          << seventeenDigitNumber(r.detCov) << ',' << seventeenDigitNumber(r.errWmax) << ',' << seventeenDigitNumber(r.errWavg) << ','
+          << seventeenDigitNumber(r.ess) << ',' << r.components << ',' << seventeenDigitNumber(r.finalNees) << ','
+          << seventeenDigitNumber(r.assocWeightAtStep) << ',' << (r.disambiguatedAtStep ? 1 : 0) << ','
+          << (r.heaviestHistoryCorrect ? 1 : 0) << ',' << seventeenDigitNumber(r.gateLostMass) << ','
+          << seventeenDigitNumber(r.analyticTotalVariation) << ',' << r.sampledCandidates << ','
+          << seventeenDigitNumber(r.samplingSeconds) << ',' << seventeenDigitNumber(r.seconds) << '\n';
     }
   });
   // Means over tracks, in the order of first appearance of (alpha, model).
@@ -168,8 +162,8 @@ void writeHybridStudy(const std::string& directory, const std::vector<HybridStud
         a += r->errWavg;
       }
       const double n = static_cast<double>(group.size());
-      out << formatNumber(key.first) << ',' << key.second << ',' << formatNumber(e / n) << ',' << formatNumber(d / n)
-          << ',' << formatNumber(m / n) << ',' << formatNumber(a / n) << '\n';
+      out << seventeenDigitNumber(key.first) << ',' << key.second << ',' << seventeenDigitNumber(e / n) << ',' << seventeenDigitNumber(d / n)
+          << ',' << seventeenDigitNumber(m / n) << ',' << seventeenDigitNumber(a / n) << '\n';
     }
   });
   writeFileAtomically((dir / "nees.csv").string(), [&](std::ostream& out) {
@@ -178,8 +172,8 @@ void writeHybridStudy(const std::string& directory, const std::vector<HybridStud
       std::vector<double> values;
       for (const HybridStudyRow* r : groups[key]) values.push_back(r->finalNees);
       const NeesSummary s = summarizeNees(values, 3);
-      out << formatNumber(key.first) << ',' << key.second << ',' << formatNumber(s.mean) << ',' << s.count << ','
-          << formatNumber(s.lower) << ',' << formatNumber(s.upper) << '\n';
+      out << seventeenDigitNumber(key.first) << ',' << key.second << ',' << seventeenDigitNumber(s.mean) << ',' << s.count << ','
+          << seventeenDigitNumber(s.lower) << ',' << seventeenDigitNumber(s.upper) << '\n';
     }
   });
 }

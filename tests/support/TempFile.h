@@ -1,17 +1,13 @@
 #pragma once
-// Helpers for the eval tests: temporary files with given content, and checking that an InputError names the
-// right file and line.
+// TempFile: a file with given content in the system's temporary directory, removed when the object goes out of
+// scope. Names are unique per process and object: semslam_eval_<pid>_<counter><suffix>.
 
-#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <string>
-
-#include "semslam/core/InputError.h"
 
 namespace semslam::test {
 
@@ -36,19 +32,5 @@ class TempFile {
  private:
   std::string path_;
 };
-
-/// Runs `action`, expecting an InputError for `file` at `line` whose problem mentions `fragment`.
-inline void expectInputError(const std::function<void()>& action, const std::string& file, std::size_t line,
-                             const std::string& fragment = "") {
-  try {
-    action();
-    ADD_FAILURE() << "expected InputError at " << file << ":" << line;
-  } catch (const InputError& error) {
-    EXPECT_EQ(error.file(), file) << error.what();
-    EXPECT_EQ(error.line(), line) << error.what();
-    EXPECT_NE(std::string(error.what()).find(fragment), std::string::npos)
-        << "message '" << error.what() << "' lacks '" << fragment << "'";
-  }
-}
 
 }  // namespace semslam::test
