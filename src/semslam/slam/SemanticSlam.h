@@ -11,6 +11,9 @@
 //      and l is a candidate when its innovation chi2 passes the gate (AssociationGate.h). A candidate's weight is
 //          w_l ∝ p_geo(z | l) · Σ_c P(z_sem | c) P(c | l)            (ClassBelief.h)
 //      normalised over the candidates. No candidate: z starts a new landmark at its back-projection from x̄_k;
+//      with BirthRule::Unassigned (docs/association-front-end.md) the gate is the joint geometric × semantic one,
+//      every detection also has the unassigned hypothesis (UnassignedHypothesis.h), and the step's detections are
+//      assigned jointly, at most one per landmark (Hungarian); an unassigned detection starts a new landmark;
 //   3. the strategy's factors (AssociationStrategy.h): mm builds a MaxMixtureFactor with components w_l; mm-nh adds
 //      the null hypothesis, the detection's factor to the most likely candidate with standard deviations scaled by
 //      nullSigmaScale, with weight nullWeight (the candidates share 1 − nullWeight); gpda adds one factor per
