@@ -81,6 +81,14 @@ TEST(AssociationErrors, OneStrayDetectionOrUnderTenPercentIsNeitherMergeNorSplit
   EXPECT_EQ(evaluate(make(list)).landmarksSplit, 1u);
 }
 
+TEST(AssociationErrors, StrayDetectionsOnSeveralEstimatesAreNeitherMergeNorSplit) {
+  // a's own estimate is 1; one detection on b's estimate 2, one on c's estimate 3, one each on unmatched 8 and 9.
+  const auto e = evaluate(make({{a, 1}, {a, 1}, {a, 1}, {a, 1}, {a, 2}, {a, 3}, {a, 8}, {a, 9}, {b, 2}, {b, 2},
+                                {c, 3}, {c, 3}}));
+  EXPECT_EQ(e.landmarksMerged, 0u);
+  EXPECT_EQ(e.landmarksSplit, 0u);
+}
+
 TEST(AssociationErrors, UnassignedDetectionsFormNoPairsButCountInTheShare) {
   // a: 2 detections on b's estimate, 18 on the null hypothesis: 10 % of 20 → merged; no pair of a is assigned
   // twice on its own estimate.

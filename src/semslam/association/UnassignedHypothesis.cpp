@@ -65,7 +65,7 @@ double UnassignedHypothesis::bearingSpan() const {
 double UnassignedHypothesis::elevationSpan() const { return std::min(2.0 * observedElevation_, std::numbers::pi); }
 
 double UnassignedHypothesis::logDensity(const Detection& detection) const {
-  if (!observedAny_ && !(specRange_ > 0.0 && specFieldOfView_ > 0.0)) {
+  if (!observedAny_ && !(dimension_ == 2 && specRange_ > 0.0 && specFieldOfView_ > 0.0)) {
     throw std::logic_error("unassigned hypothesis: the sensor field is unknown before the first detection");
   }
   // Spans of zero (every detection dead ahead so far) are widened to a minimal opening so V > 0.

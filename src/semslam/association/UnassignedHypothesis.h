@@ -13,10 +13,12 @@
 //          position 1 (per m² or m³); a relative pose adds a uniform orientation (÷ 2π in 2D, ÷ 8π² in 3D);
 //   P₀(s)  the label's predictive under the uniform class prior, Σ_c P(s | c) / M (1 without semantics).
 //
-// r_max, Φ (and Ψ) are the sensor specification's (maxRange, fieldOfView) where it gives them; where it does not,
-// the largest range and the bearing (elevation) span of the detections seen so far (observe()), i.e. from the
-// data, online, never a per-log constant. Until a detection has been observed the field is undefined and
-// logDensity throws std::logic_error. Ranges below 1 mm count as 1 mm (a detection at the sensor has no bearing).
+// r_max and Φ are the sensor specification's (maxRange, fieldOfView) where they are positive; a 0 in the log
+// ("unlimited", "all around", or simply not stated by a converter) falls back to the largest range and the bearing
+// span of the detections seen so far (observe()), i.e. to the data, online, never a per-log constant (an all-around
+// sensor's detections span close to 2π). Ψ always comes from the data. logDensity throws std::logic_error while
+// something it needs is undefined: before the first detection, unless the specification gives both r_max and Φ
+// (2D only). Ranges below 1 mm count as 1 mm (a detection at the sensor has no bearing).
 //
 // The switch point (§2): a landmark with predicted measurement ẑ and innovation covariance S beats this
 // hypothesis exactly when d² = (z − ẑ)ᵀ S⁻¹ (z − ẑ) < d*², d*² = −2 ln(λ (2π)^{m/2} |S|^{1/2} P₀(s) / P(s | j)).

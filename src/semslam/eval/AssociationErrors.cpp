@@ -1,5 +1,6 @@
 #include "semslam/eval/AssociationErrors.h"
 
+#include <algorithm>
 #include <map>
 #include <optional>
 #include <utility>
@@ -27,7 +28,9 @@ AssociationErrors evaluateAssociationErrors(const std::vector<DetectionAssociati
                                             const LandmarkMatching& matching) {
   AssociationErrors errors;
   std::map<std::pair<int, int>, std::size_t> perEstimateAndTruth;  // assigned real detections
-  std::map<int, std::size_t> perEstimate, perTruthAssigned, perTruth, mergedOf, splitOf;
+  std::map<int, std::size_t> perEstimate, perTruthAssigned, perTruth;
+  // A true landmark's detections on each estimate that is not its own: matched to another landmark, or to none.
+  std::map<std::pair<int, int>, std::size_t> onAnotherLandmarksEstimate, onUnmatchedEstimate;
   for (const DetectionAssociation& d : detections) {
     if (d.truth == kNotALandmark) {
       ++errors.clutter;
@@ -39,8 +42,8 @@ AssociationErrors evaluateAssociationErrors(const std::vector<DetectionAssociati
     if (!d.estimate) continue;
     const std::optional<int> matched = matching.truthOf(*d.estimate);
     if (matched == d.truth) ++errors.realCorrect;
-    else if (matched) ++mergedOf[d.truth];
-    else ++splitOf[d.truth];
+    else if (matched) ++onAnotherLandmarksEstimate[{d.truth, *d.estimate}];
+    else ++onUnmatchedEstimate[{d.truth, *d.estimate}];
     ++perEstimateAndTruth[{*d.estimate, d.truth}];
     ++perEstimate[*d.estimate];
     ++perTruthAssigned[d.truth];
@@ -54,10 +57,14 @@ AssociationErrors evaluateAssociationErrors(const std::vector<DetectionAssociati
   errors.pairwisePrecision = ratio(errors.pairsBoth, errors.pairsSameEstimate);
   errors.pairwiseRecall = ratio(errors.pairsBoth, errors.pairsSameTruth);
 
-  for (const auto& [truth, n] : mergedOf) {
+  // A landmark counts once, however many estimates it was merged into or split over (the largest one decides).
+  std::map<int, std::size_t> mergedLargest, splitLargest;
+  for (const auto& [key, n] : onAnotherLandmarksEstimate) mergedLargest[key.first] = std::max(mergedLargest[key.first], n);
+  for (const auto& [key, n] : onUnmatchedEstimate) splitLargest[key.first] = std::max(splitLargest[key.first], n);
+  for (const auto& [truth, n] : mergedLargest) {
     if (substantial(n, perTruth[truth])) ++errors.landmarksMerged;
   }
-  for (const auto& [truth, n] : splitOf) {
+  for (const auto& [truth, n] : splitLargest) {
     if (substantial(n, perTruth[truth])) ++errors.landmarksSplit;
   }
   return errors;

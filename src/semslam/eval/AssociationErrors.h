@@ -18,10 +18,11 @@
 //                       Example: truths [a a b], estimates [1 1 1]: same-estimate pairs 3, same-truth pairs 1,
 //                       both 1 → precision 1/3, recall 1.
 //   clutter_rejected    (clutter detections left unassigned) / (clutter detections); NaN without clutter.
-//   landmarks_merged    true landmarks t with at least 2, and at least 10 %, of their detections on an estimate
+//   landmarks_merged    true landmarks t with at least 2, and at least 10 %, of their detections on ONE estimate
 //                       that the matching gives to ANOTHER true landmark (t was merged into it).
-//   landmarks_split     true landmarks t with at least 2, and at least 10 %, of their detections on an estimate
+//   landmarks_split     true landmarks t with at least 2, and at least 10 %, of their detections on ONE estimate
 //                       that the matching gives to NO true landmark (a second estimate of t).
+//                       Detections scattered one by one over several estimates are neither.
 //                       Examples: truths [a a a b b] on estimates [1 1 1 1 1]: the matching gives 1 to a (3
 //                       shared), b has 2 of 2 detections on a's estimate → merged = 1. Truths [a a a a a] on
 //                       estimates [1 1 1 2 2]: 1 ↔ a, 2 is matched to nothing, a has 2 of 5 on it → split = 1.

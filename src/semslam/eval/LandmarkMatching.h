@@ -11,7 +11,7 @@
 //
 // Matching: rows are the distinct estimated ids, columns the distinct true ids (clutter excluded), both in
 // ascending order; the weight of (e, t) is the number of detections with estimate e and truth t. The maximum-weight
-// one-to-one assignment (HungarianAssignment.h) is computed and only pairs that share at least one detection are
+// one-to-one assignment (solve/HungarianAssignment.h) is computed and only pairs that share at least one detection are
 // kept: an estimated landmark that shares no detection with its assigned true landmark is unmatched. On ties the
 // assignment that is lexicographically smallest in (ascending estimated id → ascending true id) is taken, so the
 // result is deterministic; the number of shared detections in matched pairs (the maximum) does not depend on it.

@@ -1,5 +1,5 @@
 #pragma once
-// The trajectory file formats the eval layer reads, by name: "tum", "kitti", "euroc" (see TumFormat.h,
+// The trajectory file formats semslam reads (for `semslam eval` and the simulators' input), by name: "tum", "kitti", "euroc" (see TumFormat.h,
 // KittiFormat.h, EurocFormat.h for each layout).
 
 #include <string>

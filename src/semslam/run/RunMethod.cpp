@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <stdexcept>
 
 #include "semslam/io/HypothesesJsonl.h"
 #include "semslam/io/RunMetricsFile.h"
@@ -92,6 +93,7 @@ void runHybridBelief(const MeasurementLog& log, const MethodOptions& options, co
 MethodRun runMethod(const MeasurementLog& log, const MethodOptions& options, const RunProgress& progress) {
   MethodRun run;
   run.method = options.method;
+  run.hasRunFolder = options.runFolder;
   if (isHybrid(options.method)) {
     runHybridBelief(log, options, progress, run);
   } else {
@@ -101,6 +103,7 @@ MethodRun runMethod(const MeasurementLog& log, const MethodOptions& options, con
 }
 
 void writeMethodRun(const std::string& directory, const MethodRun& run) {
+  if (!run.hasRunFolder) throw std::invalid_argument("writeMethodRun: the run was made without options.runFolder");
   std::filesystem::create_directories(directory);
   const std::filesystem::path dir(directory);
   writeRunFolder(directory, run.output);

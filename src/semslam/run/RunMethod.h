@@ -2,8 +2,8 @@
 // RunMethod: where a run happens. runMethod drives one estimation method of either paper over a whole measurement
 // log, scores its final estimate against the log's truth (eval/RunEvaluation.h) and builds its run folder
 // (io/RunFolder.h); writeMethodRun writes that folder. Every caller — `semslam run`, `semslam demo`, the studies
-// (study/), the benchmarks — goes through these two functions, so a run is driven, scored and written the same
-// way for every method.
+// (study/) — goes through these two functions, so a run is driven, scored and written the same way for every
+// method (the benchmarks time single estimator steps directly).
 //
 //   known | ml | gpda | mm | mm-nh   paper B's pipeline (slam/SemanticSlam.h) with `options.slam`; its
 //                                    strategy is the method's. Back end: the incremental smoother.
@@ -17,7 +17,9 @@
 // weight is the method's own: paper B's normalised association probability of the chosen landmark, paper A's
 // association marginal P(β_1:k | H_k) (A, eq. 8) of the heaviest component's history.
 //
-// result.timeSeconds is the estimator's wall time: scoring and building the folder are excluded.
+// result.timeSeconds is the estimator's wall time as the estimator measures it (paper B: the pipeline's steps and
+// final convergence; paper A: runHybrid's loop, which includes each step's marginals): scoring and building the
+// folder are excluded.
 
 #include <cstddef>
 #include <functional>
@@ -53,6 +55,7 @@ struct MethodRun {
   std::size_t factors = 0;   ///< paper B: factors in the final graph
   std::vector<HybridStepRecord> hybridSteps;       ///< paper A: what the belief said and did at every step
   std::vector<HypothesisMetrics> hybridStepMetrics;///< paper A: eval's metrics of each step's belief (runFolder)
+  bool hasRunFolder = false;                       ///< `output` was built (options.runFolder)
 };
 
 /// Progress callback: (steps done, steps in all).
@@ -62,7 +65,8 @@ using RunProgress = std::function<void(int, int)>;
 /// options it cannot take.
 MethodRun runMethod(const MeasurementLog& log, const MethodOptions& options, const RunProgress& progress = {});
 
-/// Writes run.output, metrics.json and (hybrid) hypotheses.jsonl into `directory` (created if needed).
+/// Writes run.output, metrics.json and (hybrid) hypotheses.jsonl into `directory` (created if needed). Throws
+/// std::invalid_argument for a run made without options.runFolder.
 void writeMethodRun(const std::string& directory, const MethodRun& run);
 
 }  // namespace semslam

@@ -52,13 +52,17 @@ LandmarkState toLandmarkState(const Value& value) {
       value);
 }
 
-/// Weight of a forbidden pair in the joint assignment: far below any log-likelihood the step can produce, finite
-/// (the Hungarian solver takes finite weights only). Every row keeps its own unassigned column, so an optimal
-/// assignment never needs a forbidden pair.
+/// Weight of a forbidden pair in the joint assignment: below the smallest allowed weight by more than the sum of
+/// all their magnitudes, so no assignment that uses one can be optimal (every row keeps its own unassigned
+/// column), yet finite (the Hungarian solver takes finite weights only) and no larger in magnitude than needed
+/// (the solver's tie tolerance scales with the largest |weight|).
 double forbiddenWeight(const std::vector<double>& allowed) {
-  double spread = 1.0;
-  for (double w : allowed) spread += std::abs(w);
-  return -1e3 * spread;
+  double spread = 1.0, smallest = 0.0;
+  for (double w : allowed) {
+    spread += std::abs(w);
+    smallest = std::min(smallest, w);
+  }
+  return smallest - spread;
 }
 
 }  // namespace
@@ -259,8 +263,11 @@ void SemanticSlam::findCandidates(const JointMarginal& marginal, int landmarkCou
 
 void SemanticSlam::findCandidatesWithUnassigned(const JointMarginal* marginal, int landmarkCount,
                                                 DetectionRecord& record) const {
-  // P₀(s): the label's predictive under the uniform class prior (1 without semantics).
-  const double labelPrior = record.semanticLikelihoods.size() > 0 ? record.semanticLikelihoods.mean() : 1.0;
+  // P₀(s): the label's predictive under the uniform class prior (1 without semantics). A label that every class
+  // rules out (all likelihoods 0, e.g. an exact model) carries no usable information: it counts as uninformative
+  // here, and every landmark's predictive of it is 0, so the detection is unassigned.
+  double labelPrior = record.semanticLikelihoods.size() > 0 ? record.semanticLikelihoods.mean() : 1.0;
+  if (!(labelPrior > 0.0) || !std::isfinite(labelPrior)) labelPrior = 1.0;
   record.unassignedLogLikelihood = unassigned_.logDensity(record.measurement) + std::log(labelPrior);  // (§1)
   if (!marginal) return;
   const Key pose = poseKeys_.back();
@@ -432,13 +439,14 @@ std::pair<std::optional<int>, double> SemanticSlam::chosenAssociation(const Dete
     const double scale = options_.strategy == AssociationStrategy::MaxMixtureNullHypothesis ? 1.0 - options_.nullWeight : 1.0;
     return {record.candidates[active], record.weights[active] * scale};
   }
-  const int best = bestCandidate(record);
+  const int best = argmax(record.weights);  // ml: the one candidate left; gpda: the most probable after its EM
   return {record.candidates[best], record.weights[best]};
 }
 
 RunResult SemanticSlam::result(bool withPoseCovariances) const {
   RunResult result;
   result.method = strategyName(options_.strategy);
+  if (options_.birth == BirthRule::Unassigned) result.method += "+unassigned";  // not the paper's birth rule
   const Values& estimate = smoother_->estimate();
   for (Key pose : poseKeys_) {
     result.poses.push_back(toPose(estimate.value(pose)));

@@ -15,7 +15,8 @@
 //      every detection also has the unassigned hypothesis (UnassignedHypothesis.h), and the step's detections are
 //      assigned jointly, at most one per landmark (Hungarian); an unassigned detection starts a new landmark;
 //   3. the strategy's factors (AssociationStrategy.h): mm builds a MaxMixtureFactor with components w_l; mm-nh adds
-//      the null hypothesis, the detection's factor to the most likely candidate with standard deviations scaled by
+//      the null hypothesis, the detection's factor to the most likely candidate (with BirthRule::Unassigned: the
+//      jointly assigned landmark, which the warm start below uses too) with standard deviations scaled by
 //      nullSigmaScale, with weight nullWeight (the candidates share 1 − nullWeight); gpda adds one factor per
 //      candidate whose information is scaled by w_l;
 //   4. the smoother re-solves (mm, mm-nh with warmStart: first with each detection's most likely candidate, then
