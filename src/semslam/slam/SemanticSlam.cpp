@@ -243,15 +243,18 @@ void SemanticSlam::addStep(const TimeStep& step) {
   }
 }
 
-void SemanticSlam::findCandidates(const JointMarginal& marginal, int landmarkCount, DetectionRecord& record) const {
+LinearizedLikelihood SemanticSlam::geometricLikelihood(const JointMarginal& marginal, const Landmark& landmark,
+                                                       const Detection& detection) const {
   const Key pose = poseKeys_.back();
-  const Values& estimate = smoother_->estimate();
+  const std::vector<FactorPtr> factor = {factory_.detectionFactor(pose, landmark.key, detection)};
+  return linearizedLikelihood(factor, smoother_->estimate(), marginal.restrictedTo({pose, landmark.key}));
+}
+
+void SemanticSlam::findCandidates(const JointMarginal& marginal, int landmarkCount, DetectionRecord& record) const {
   std::vector<double> logWeights;
   for (int j = 0; j < landmarkCount; ++j) {
     const Landmark& landmark = landmarks_[j];
-    const std::vector<FactorPtr> factor = {factory_.detectionFactor(pose, landmark.key, record.measurement)};
-    const JointMarginal pair = marginal.restrictedTo({pose, landmark.key});
-    const LinearizedLikelihood geometric = linearizedLikelihood(factor, estimate, pair);
+    const LinearizedLikelihood geometric = geometricLikelihood(marginal, landmark, record.measurement);
     if (!gate_.accepts(geometric)) continue;
     const double semantic = landmark.classBelief.predictive(record.semanticLikelihoods);
     if (!(semantic > 0.0)) continue;  // a label this landmark's class belief rules out (exact model, p = 0)
@@ -270,15 +273,11 @@ void SemanticSlam::findCandidatesWithUnassigned(const JointMarginal* marginal, i
   if (!(labelPrior > 0.0) || !std::isfinite(labelPrior)) labelPrior = 1.0;
   record.unassignedLogLikelihood = unassigned_.logDensity(record.measurement) + std::log(labelPrior);  // (§1)
   if (!marginal) return;
-  const Key pose = poseKeys_.back();
-  const Values& estimate = smoother_->estimate();
   for (int j = 0; j < landmarkCount; ++j) {
     const Landmark& landmark = landmarks_[j];
     const double semantic = landmark.classBelief.predictive(record.semanticLikelihoods);
     if (!(semantic > 0.0)) continue;  // a label this landmark's class belief rules out
-    const std::vector<FactorPtr> factor = {factory_.detectionFactor(pose, landmark.key, record.measurement)};
-    const LinearizedLikelihood geometric =
-        linearizedLikelihood(factor, estimate, marginal->restrictedTo({pose, landmark.key}));
+    const LinearizedLikelihood geometric = geometricLikelihood(*marginal, landmark, record.measurement);
     // The joint gate (§3): g = d² − 2 ln(P(s | j) / P₀(s)) against the χ²_m quantile.
     const double jointStatistic = geometric.innovationChi2 - 2.0 * std::log(semantic / labelPrior);
     if (jointStatistic > gate_.threshold(geometric.dimension)) continue;

@@ -123,6 +123,10 @@ class SemanticSlam {
   static int bestCandidate(const DetectionRecord& record);
   void addFirstPose(FactorGraph& factors, Values& values);
   int addLandmark(const Value& value, std::optional<int> truthId, Values& values);
+  /// p_geo(z | landmark) of step 2 at the current estimate: the detection's factor to `landmark` from the newest
+  /// pose, linearised under the pair's block of `marginal` (MarginalLikelihood.h). Both birth rules use it.
+  LinearizedLikelihood geometricLikelihood(const JointMarginal& marginal, const Landmark& landmark,
+                                           const Detection& detection) const;
   /// Candidates and their normalised weights for `detection` at the current estimate (step 2).
   /// Landmarks created during this step are not candidates (the marginal predates them; a landmark produces at
   /// most one detection per step).
