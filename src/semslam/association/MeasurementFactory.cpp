@@ -207,4 +207,14 @@ Vector MeasurementFactory::positionOf(const Value& value) {
       value);
 }
 
+Vector MeasurementFactory::positionInSensorFrame(const Value& robot, const Value& landmark) const {
+  const Vector position = positionOf(landmark);
+  if (dimension_ == 2) {
+    const SE2 sensor = std::get<SE2>(robot).compose(std::get<SE2>(sensor_.bodyToSensor));
+    return sensor.transformTo(Point2(position(0), position(1)));
+  }
+  const SE3 sensor = std::get<SE3>(robot).compose(std::get<SE3>(sensor_.bodyToSensor));
+  return sensor.transformTo(Point3(position(0), position(1), position(2)));
+}
+
 }  // namespace semslam

@@ -52,6 +52,8 @@ class MeasurementFactory {
   Value landmarkValue(const LandmarkState& state) const;
   /// The position part (2 or 3 numbers) of a landmark or pose value.
   static Vector positionOf(const Value& value);
+  /// The position of `landmark` in the frame of the sensor mounted on `robot` (2 or 3 numbers).
+  Vector positionInSensorFrame(const Value& robot, const Value& landmark) const;
 
  private:
   void checkDetection(const Detection& detection) const;

@@ -35,15 +35,17 @@ UnassignedHypothesis::Polar UnassignedHypothesis::polarOf(const Detection& detec
       p.elevation = g(2);
       break;
     case SensorKind::RelativePosition:
-    case SensorKind::RelativePose: {
-      const int n = dimension_;  // the position part: x, y[, z]
-      p.range = g.head(n).norm();
-      p.bearing = std::atan2(g(1), g(0));
-      if (n == 3) p.elevation = std::atan2(g(2), g.head(2).norm());
-      break;
-    }
+    case SensorKind::RelativePose: return polarOfPosition(g.head(dimension_));  // the position part: x, y[, z]
   }
   p.range = std::max(std::abs(p.range), kMinimumRange);
+  return p;
+}
+
+UnassignedHypothesis::Polar UnassignedHypothesis::polarOfPosition(const Vector& position) const {
+  Polar p;
+  p.range = std::max(position.norm(), kMinimumRange);
+  p.bearing = std::atan2(position(1), position(0));
+  if (position.size() == 3) p.elevation = std::atan2(position(2), position.head(2).norm());
   return p;
 }
 
@@ -64,21 +66,37 @@ double UnassignedHypothesis::bearingSpan() const {
 
 double UnassignedHypothesis::elevationSpan() const { return std::min(2.0 * observedElevation_, std::numbers::pi); }
 
-double UnassignedHypothesis::logDensity(const Detection& detection) const {
+void UnassignedHypothesis::requireField() const {
   if (!observedAny_ && !(dimension_ == 2 && specRange_ > 0.0 && specFieldOfView_ > 0.0)) {
     throw std::logic_error("unassigned hypothesis: the sensor field is unknown before the first detection");
   }
+}
+
+double UnassignedHypothesis::logCartesianDensity() const {
+  requireField();
   // Spans of zero (every detection dead ahead so far) are widened to a minimal opening so V > 0.
   const double rMax = std::max(maxRange(), kMinimumRange);
   const double phi = std::max(bearingSpan(), 1e-3);
-  const Polar p = polarOf(detection);
-  double logVolume = 0.0, logJacobian = 0.0;
+  double logVolume = 0.0;
   if (dimension_ == 2) {
     logVolume = std::log(phi) + 2.0 * std::log(rMax) - std::log(2.0);
   } else {
     const double psi = std::max(elevationSpan(), 1e-3);
     logVolume = 3.0 * std::log(rMax) - std::log(3.0) + std::log(phi) + std::log(2.0 * std::sin(psi / 2.0));
   }
+  return std::log(rate_) - logVolume;
+}
+
+bool UnassignedHypothesis::inField(const Vector& position) const {
+  requireField();
+  const Polar p = polarOfPosition(position);
+  const bool inElevation = dimension_ == 2 || std::abs(p.elevation) <= elevationSpan() / 2.0;
+  return p.range <= maxRange() && std::abs(p.bearing) <= bearingSpan() / 2.0 && inElevation;
+}
+
+double UnassignedHypothesis::logDensity(const Detection& detection) const {
+  const Polar p = polarOf(detection);
+  double logJacobian = 0.0;
   switch (kind_) {
     case SensorKind::RangeBearing: logJacobian = std::log(p.range); break;
     case SensorKind::RangeBearingElevation:
@@ -90,7 +108,7 @@ double UnassignedHypothesis::logDensity(const Detection& detection) const {
                                     : -std::log(8.0 * std::numbers::pi * std::numbers::pi);
       break;
   }
-  return std::log(rate_) - logVolume + logJacobian;
+  return logCartesianDensity() + logJacobian;
 }
 
 double switchDistanceSquared(double logDensity, int measurementDimension, double logDeterminantS,

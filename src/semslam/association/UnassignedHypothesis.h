@@ -39,6 +39,12 @@ class UnassignedHypothesis {
 
   /// ln λ(z_g) of a detection's geometry (not its label).
   double logDensity(const Detection& detection) const;
+  /// ln ρ = ln(μ / V): the density of unassigned landmarks per m² (2D) or m³ (3D) of the world, the prior of a
+  /// provisional landmark's merge test (docs/association-front-end.md §5).
+  double logCartesianDensity() const;
+  /// Whether a point at `position` in the sensor frame (2 or 3 numbers) lies in the field: range ≤ r_max and
+  /// |bearing| ≤ Φ / 2 (and |elevation| ≤ Ψ / 2 in 3D).
+  bool inField(const Vector& position) const;
 
   /// The field's extents in use: r_max, Φ and (3D) Ψ.
   double maxRange() const;
@@ -50,6 +56,8 @@ class UnassignedHypothesis {
     double range = 0.0, bearing = 0.0, elevation = 0.0;
   };
   Polar polarOf(const Detection& detection) const;
+  Polar polarOfPosition(const Vector& position) const;
+  void requireField() const;
 
   SensorKind kind_;
   int dimension_;

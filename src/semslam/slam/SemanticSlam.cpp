@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
 #include "semslam/association/MarginalLikelihood.h"
 #include "semslam/factors/MaxMixtureFactor.h"
+#include "semslam/models/HypothesisComponent.h"
 #include "semslam/solve/HungarianAssignment.h"
 
 namespace semslam {
@@ -89,6 +92,7 @@ SemanticSlam::SemanticSlam(const LogHeader& header, SemanticSlamOptions options)
       factory_(header),
       gate_(options_.gateConfidence),
       unassigned_(header, options_.unassignedRate),
+      lifecycle_(options_.provisional),
       smoother_(options_.smoother ? options_.smoother() : smootherFactory(SmootherKind::Incremental)()) {
   if (!(options_.nullWeight > 0.0 && options_.nullWeight < 1.0)) {
     throw std::invalid_argument("null-hypothesis weight must be in (0, 1)");
@@ -97,10 +101,16 @@ SemanticSlam::SemanticSlam(const LogHeader& header, SemanticSlamOptions options)
   if (options_.emWindow < 1 || options_.emIterations < 0) throw std::invalid_argument("bad EM window or iterations");
 }
 
-int SemanticSlam::addLandmark(const Value& value, std::optional<int> truthId, Values& values) {
+int SemanticSlam::addLandmark(const Value& value, std::optional<int> truthId, Values& values,
+                              std::optional<double> birthTime) {
   const int index = landmarks();
   const Key key = landmarkKey(static_cast<std::uint64_t>(index));
-  landmarks_.push_back({key, ClassBelief(header_.classes)});
+  landmarks_.push_back({key, ClassBelief(header_.classes), {}, std::nullopt});
+  if (birthTime) {
+    lifecycle_.addProvisional(*birthTime);
+  } else {
+    lifecycle_.addConfirmed();
+  }
   if (truthId) landmarkOfTruthId_.emplace(*truthId, index);
   values.insert(key, value);
   return index;
@@ -127,6 +137,8 @@ void SemanticSlam::addStep(const TimeStep& step) {
   // 1. Propagate.
   const int k = steps();
   const Key pose = poseKey(static_cast<std::uint64_t>(k));
+  lifecycle_.observeStepTime(step.time);
+  stepTimes_.push_back(step.time);
   FactorGraph propagation;
   Values newValues;
   if (k == 0) {
@@ -153,13 +165,18 @@ void SemanticSlam::addStep(const TimeStep& step) {
   std::optional<JointMarginal> marginal;
   if (!known && !landmarks_.empty() && !step.detections.empty()) {
     std::vector<Key> keys = {pose};
-    for (const Landmark& landmark : landmarks_) keys.push_back(landmark.key);
+    for (int j = 0; j < landmarks(); ++j) {
+      if (lifecycle_.active(j)) keys.push_back(landmarks_[j].key);
+    }
     marginal = smoother_->jointMarginal(keys);
   }
   FactorGraph associations = propagation;
   Values values = newValues;
   const int landmarksBeforeStep = landmarks();
   std::vector<std::size_t> factorsOfRecord;  // how many of `associations` each of this step's records added
+  std::vector<bool> warmStarted;             // whose first factor is the warm start's, to become the mixture
+  FactorGraph weakPriors;                    // of the step's provisional landmarks (§5), after every record's
+  std::vector<int> weakPriorLandmarks;
   const std::size_t first = records_.size();
   for (std::size_t i = 0; i < step.detections.size(); ++i) {
     DetectionRecord record;
@@ -198,28 +215,43 @@ void SemanticSlam::addStep(const TimeStep& step) {
     } else {
       if (!jointly && marginal) findCandidates(*marginal, landmarksBeforeStep, record);
       if (record.candidates.empty()) {
-        const int index = addLandmark(factory_.initialLandmark(record.measurement, robot), std::nullopt, values);
+        // Under BirthRule::Unassigned the new landmark is provisional, held by a weak prior (§5).
+        const std::optional<double> birthTime = jointly ? std::optional<double>(step.time) : std::nullopt;
+        const Value initial = factory_.initialLandmark(record.measurement, robot);
+        const int index = addLandmark(initial, std::nullopt, values, birthTime);
         record.createdLandmark = index;
+        landmarks_[index].records.push_back(r);
         associations.add(factory_.detectionFactor(pose, landmarks_[index].key, record.measurement));
         landmarks_[index].classBelief.update(record.semanticLikelihoods);
+        if (birthTime) {
+          weakPriors.add(weakPriorFactor(index, initial));
+          weakPriorLandmarks.push_back(index);
+        }
       } else {
         const std::vector<FactorPtr> factors = associationFactors(record);
-        if (record.mixture && options_.warmStart) {
-          // Warm start: this solve uses the most likely candidate under a Cauchy kernel (an outlier pulls little);
-          // the mixture replaces it below.
+        const bool warm = record.mixture && options_.warmStart &&
+                          bestPosterior(record) >= options_.warmStartMinimumPosterior;
+        if (warm) {
+          // Warm start: this solve uses the (unambiguous) most likely candidate under a Cauchy kernel (an outlier
+          // pulls little); the mixture replaces it below.
           const int best = record.candidates[bestCandidate(record)];
           associations.add(factory_.detectionFactor(pose, landmarks_[best].key, record.measurement, 1.0,
                                                     std::make_shared<CauchyKernel>(kWarmStartCauchyScale)));
         } else {
           for (const FactorPtr& factor : factors) associations.add(factor);
         }
+        warmStarted.resize(r - first + 1, false);
+        warmStarted[r - first] = warm;
         for (std::size_t c = 0; c < record.candidates.size(); ++c) {
+          landmarks_[record.candidates[c]].records.push_back(r);
           landmarks_[record.candidates[c]].classBelief.update(record.semanticLikelihoods, record.weights[c]);
         }
       }
     }
     factorsOfRecord.push_back(associations.size() - factorsBefore);
   }
+  warmStarted.resize(records_.size() - first, false);
+  for (const FactorPtr& prior : weakPriors) associations.add(prior);
 
   // 4. Solve, and remember which smoother factors belong to which detection (they follow any propagation ones).
   const std::vector<FactorIndex> indices = smoother_->update(associations, values);
@@ -228,18 +260,23 @@ void SemanticSlam::addStep(const TimeStep& step) {
     DetectionRecord& record = records_[firstRecordOfStep_.back() + i];
     for (std::size_t c = 0; c < factorsOfRecord[i]; ++c) record.factors.push_back(indices.at(next++));
   }
-  if (options_.warmStart) {
-    bool switched = false;
-    for (std::size_t r = firstRecordOfStep_.back(); r < records_.size(); ++r) {
-      if (!records_[r].mixture) continue;
-      smoother_->replaceFactor(records_[r].factors.at(0), records_[r].mixture);
-      switched = true;
-    }
-    if (switched) smoother_->update();
+  for (int landmark : weakPriorLandmarks) landmarks_[landmark].weakPrior = indices.at(next++);
+  bool switched = false;
+  for (std::size_t i = 0; i < warmStarted.size(); ++i) {
+    if (!warmStarted[i]) continue;
+    const DetectionRecord& record = records_[first + i];
+    smoother_->replaceFactor(record.factors.at(0), record.mixture);
+    switched = true;
   }
+  if (switched) smoother_->update();
   if (options_.strategy == AssociationStrategy::Gpda && options_.emIterations > 0) {
     const int firstStep = std::max(0, k + 1 - options_.emWindow);
     expectationMaximization(firstRecordOfStep_[firstStep], options_.emIterations);
+  }
+  if (jointly) {
+    updateLifecycle(k, step.time, landmarksBeforeStep);
+    while (repairExclusion(first, records_.size())) {
+    }
   }
 }
 
@@ -253,6 +290,7 @@ LinearizedLikelihood SemanticSlam::geometricLikelihood(const JointMarginal& marg
 void SemanticSlam::findCandidates(const JointMarginal& marginal, int landmarkCount, DetectionRecord& record) const {
   std::vector<double> logWeights;
   for (int j = 0; j < landmarkCount; ++j) {
+    if (!lifecycle_.active(j)) continue;
     const Landmark& landmark = landmarks_[j];
     const LinearizedLikelihood geometric = geometricLikelihood(marginal, landmark, record.measurement);
     if (!gate_.accepts(geometric)) continue;
@@ -274,6 +312,7 @@ void SemanticSlam::findCandidatesWithUnassigned(const JointMarginal* marginal, i
   record.unassignedLogLikelihood = unassigned_.logDensity(record.measurement) + std::log(labelPrior);  // (§1)
   if (!marginal) return;
   for (int j = 0; j < landmarkCount; ++j) {
+    if (!lifecycle_.active(j)) continue;  // dropped or merged (§5)
     const Landmark& landmark = landmarks_[j];
     const double semantic = landmark.classBelief.predictive(record.semanticLikelihoods);
     if (!(semantic > 0.0)) continue;  // a label this landmark's class belief rules out
@@ -422,14 +461,301 @@ void SemanticSlam::expectationMaximization(std::size_t firstRecord, int iteratio
   }
 }
 
+std::vector<FactorPtr> SemanticSlam::recordFactors(DetectionRecord& record) const {
+  record.mixture = nullptr;
+  if (record.knownLandmark) {
+    return {factory_.detectionFactor(poseKeys_[record.step], landmarks_[*record.knownLandmark].key, record.measurement)};
+  }
+  if (record.createdLandmark) {
+    return {factory_.detectionFactor(poseKeys_[record.step], landmarks_[*record.createdLandmark].key,
+                                     record.measurement)};
+  }
+  if (record.candidates.empty()) return {};
+  return associationFactors(record);
+}
+
+void SemanticSlam::applyEdits(std::vector<std::size_t> touched, std::vector<FactorIndex> removed) {
+  std::sort(touched.begin(), touched.end());
+  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  FactorGraph added;
+  std::vector<std::size_t> addedBy;  // the record of each added factor
+  for (std::size_t r : touched) {
+    DetectionRecord& record = records_[r];
+    removed.insert(removed.end(), record.factors.begin(), record.factors.end());
+    record.factors.clear();
+    for (const FactorPtr& factor : recordFactors(record)) {
+      added.add(factor);
+      addedBy.push_back(r);
+    }
+  }
+  if (added.size() == 0 && removed.empty()) return;
+  const std::vector<FactorIndex> indices = smoother_->update(added, {}, removed);
+  for (std::size_t i = 0; i < indices.size(); ++i) records_[addedBy[i]].factors.push_back(indices[i]);
+}
+
+FactorPtr SemanticSlam::weakPriorFactor(int landmark, const Value& value) const {
+  const int dimension = factory_.landmarkTangentDimension();
+  const int position = factory_.dimension();  // the tangent's first entries: translation (MeasurementLog.h)
+  const double sigma = std::max(unassigned_.maxRange(), 1e-3);
+  Vector variances = Vector::Constant(dimension, std::numbers::pi * std::numbers::pi);
+  variances.head(std::min(position, dimension)).setConstant(sigma * sigma);
+  return factory_.landmarkPriorFactor(landmarks_[landmark].key,
+                                      LandmarkPrior{-1, toLandmarkState(value), Matrix(variances.asDiagonal())});
+}
+
+double SemanticSlam::bestPosterior(const DetectionRecord& record) {
+  const int best = bestCandidate(record);
+  if (record.logLikelihoods.size() != record.candidates.size()) return record.weights[best];  // threshold rule
+  std::vector<double> logWeights = record.logLikelihoods;
+  logWeights.push_back(record.unassignedLogLikelihood);
+  return normalizeLogWeights(logWeights)[best];
+}
+
+std::vector<int> SemanticSlam::stepsOn(int landmark) const {
+  std::vector<int> steps;
+  for (std::size_t r : landmarks_[landmark].records) {
+    const DetectionRecord& record = records_[r];
+    if (record.createdLandmark == landmark || record.assigned == landmark || record.knownLandmark == landmark) {
+      steps.push_back(record.step);
+    }
+  }
+  std::sort(steps.begin(), steps.end());
+  return steps;
+}
+
+void SemanticSlam::dropLandmark(int landmark, std::vector<std::size_t>& touched) {
+  // (§5) Every detection on it is left on no landmark; the variable stays, held by its weak prior alone.
+  lifecycle_.drop(landmark);
+  for (std::size_t r : landmarks_[landmark].records) {
+    DetectionRecord& record = records_[r];
+    if (record.createdLandmark == landmark) {
+      record.createdLandmark.reset();
+      record.rejected = true;
+    } else {
+      const auto found = std::find(record.candidates.begin(), record.candidates.end(), landmark);
+      if (found == record.candidates.end()) continue;
+      const auto c = found - record.candidates.begin();
+      record.candidates.erase(found);
+      record.weights.erase(record.weights.begin() + c);
+      if (!record.logLikelihoods.empty()) record.logLikelihoods.erase(record.logLikelihoods.begin() + c);
+      if (record.assigned == landmark) record.assigned.reset();
+      if (!record.candidates.empty()) {
+        record.weights = record.logLikelihoods.empty() ? normalizeWeights(record.weights)
+                                                       : normalizeLogWeights(record.logLikelihoods);
+      }
+    }
+    touched.push_back(r);
+  }
+  landmarks_[landmark].records.clear();
+}
+
+void SemanticSlam::mergeLandmark(int landmark, int into, std::vector<std::size_t>& touched,
+                                 std::vector<FactorIndex>& removed) {
+  // (§5) Its detections move to `into`, their labels with them, and count towards confirming it; the variable
+  // stays, held by its weak prior alone.
+  lifecycle_.merge(landmark, into);
+  Landmark& target = landmarks_[into];
+  std::vector<int> stepsMoved = stepsOn(landmark);
+  for (std::size_t r : landmarks_[landmark].records) {
+    DetectionRecord& record = records_[r];
+    if (record.createdLandmark == landmark) {
+      record.createdLandmark = into;
+      target.classBelief.update(record.semanticLikelihoods);
+    } else {
+      const auto found = std::find(record.candidates.begin(), record.candidates.end(), landmark);
+      if (found == record.candidates.end()) continue;
+      const auto c = found - record.candidates.begin();
+      target.classBelief.update(record.semanticLikelihoods, record.weights[c]);
+      if (std::find(record.candidates.begin(), record.candidates.end(), into) != record.candidates.end()) {
+        record.candidates.erase(found);  // already a candidate: one entry, the one it had
+        record.weights.erase(record.weights.begin() + c);
+        if (!record.logLikelihoods.empty()) record.logLikelihoods.erase(record.logLikelihoods.begin() + c);
+        record.weights = record.logLikelihoods.empty() ? normalizeWeights(record.weights)
+                                                       : normalizeLogWeights(record.logLikelihoods);
+      } else {
+        *found = into;  // its likelihood under the landmark it merged into: the one computed for the merged one
+      }
+      if (record.assigned == landmark) record.assigned = into;
+    }
+    target.records.push_back(r);
+    touched.push_back(r);
+  }
+  landmarks_[landmark].records.clear();
+  for (int step : stepsMoved) confirmIfDue(into, stepTimes_[static_cast<std::size_t>(step)], removed);
+}
+
+void SemanticSlam::confirmIfDue(int landmark, double time, std::vector<FactorIndex>& removed) {
+  if (!lifecycle_.observe(landmark, time) || !landmarks_[landmark].weakPrior) return;
+  removed.push_back(*landmarks_[landmark].weakPrior);  // a confirmed landmark stands on its detections
+  landmarks_[landmark].weakPrior.reset();
+}
+
+void SemanticSlam::mergeProvisionalLandmarks(std::vector<std::size_t>& touched, std::vector<FactorIndex>& removed) {
+  // (§5) P merges into an active landmark L when the difference of their positions passes the χ² gate under their
+  // joint marginal and "one landmark" explains it better than a second, uniformly placed one:
+  //     N(p_P − p_L; 0, Σ_d) · M Σ_c P(c | P) P(c | L)  >  ρ,
+  // Σ_d = J_P Σ_PP J_Pᵀ + J_L Σ_LL J_Lᵀ − J_P Σ_PL J_Lᵀ − J_L Σ_LP J_Pᵀ (J: tangent → world position), ρ the
+  // unassigned hypothesis's Cartesian density. Never when a step has a detection on each (exclusion, §4).
+  const Values& estimate = smoother_->estimate();
+  std::vector<int> provisional, nearby;
+  for (int j = 0; j < landmarks(); ++j) {
+    if (lifecycle_.provisional(j)) provisional.push_back(j);
+  }
+  if (provisional.empty()) return;
+  const double range = unassigned_.maxRange();
+  auto position = [&](int j) { return MeasurementFactory::positionOf(estimate.value(landmarks_[j].key)); };
+  for (int j = 0; j < landmarks(); ++j) {
+    if (!lifecycle_.active(j) || lifecycle_.provisional(j)) continue;
+    for (int p : provisional) {
+      if ((position(j) - position(p)).norm() <= range) {
+        nearby.push_back(j);
+        break;
+      }
+    }
+  }
+  std::vector<Key> keys;
+  for (int j : provisional) keys.push_back(landmarks_[j].key);
+  for (int j : nearby) keys.push_back(landmarks_[j].key);
+  const JointMarginal marginal = smoother_->jointMarginal(keys);
+  const int d = factory_.dimension();
+  auto toWorld = [&](int j) -> Matrix {  // J: the landmark tangent's position part in the world frame
+    const Value& value = estimate.value(landmarks_[j].key);
+    Matrix jacobian = Matrix::Zero(d, factory_.landmarkTangentDimension());
+    if (const auto* se2 = std::get_if<SE2>(&value)) jacobian.leftCols(2) = se2->rotation().matrix();
+    else if (const auto* se3 = std::get_if<SE3>(&value)) jacobian.leftCols(3) = se3->rotation().matrix();
+    else jacobian.leftCols(d).setIdentity();
+    return jacobian;
+  };
+  const double classes = header_.classes > 0 ? header_.classes : 1;
+  for (int p : provisional) {
+    if (!lifecycle_.provisional(p)) continue;
+    const std::vector<int> stepsOfP = stepsOn(p);
+    std::optional<int> best;
+    double bestScore = unassigned_.logCartesianDensity();
+    std::vector<int> targets = nearby;
+    for (int q : provisional) {
+      if (q < p && lifecycle_.provisional(q)) targets.push_back(q);  // into an older provisional one
+    }
+    for (int l : targets) {
+      const Vector difference = position(p) - position(l);
+      if (difference.norm() > range) continue;
+      const JointMarginal pair = marginal.restrictedTo({landmarks_[p].key, landmarks_[l].key});
+      const Matrix jp = toWorld(p), jl = toWorld(l);
+      const Matrix cross = jp * pair.block(landmarks_[p].key, landmarks_[l].key) * jl.transpose();
+      const Matrix covariance = jp * pair.block(landmarks_[p].key, landmarks_[p].key) * jp.transpose() +
+                                jl * pair.block(landmarks_[l].key, landmarks_[l].key) * jl.transpose() - cross -
+                                cross.transpose();
+      const Eigen::LLT<Matrix> cholesky(covariance);
+      if (cholesky.info() != Eigen::Success) continue;
+      const Vector whitened = cholesky.matrixL().solve(difference);
+      const double chi2 = whitened.squaredNorm();
+      if (chi2 > gate_.threshold(d)) continue;
+      const Vector logDiagonal = cholesky.matrixLLT().diagonal().array().log();
+      const double logGaussian = -0.5 * chi2 - 0.5 * d * std::log(2.0 * std::numbers::pi) - logDiagonal.sum();
+      const double sameClass = classes * landmarks_[p].classBelief.probabilities().dot(
+                                             landmarks_[l].classBelief.probabilities());
+      if (!(sameClass > 0.0)) continue;
+      const double score = logGaussian + std::log(sameClass);
+      if (score <= bestScore) continue;
+      const std::vector<int> stepsOfL = stepsOn(l);
+      std::vector<int> shared;
+      std::set_intersection(stepsOfP.begin(), stepsOfP.end(), stepsOfL.begin(), stepsOfL.end(),
+                            std::back_inserter(shared));
+      if (!shared.empty()) continue;
+      best = l;
+      bestScore = score;
+    }
+    if (best) mergeLandmark(p, *best, touched, removed);
+  }
+}
+
+void SemanticSlam::updateLifecycle(int k, double time, int landmarksBeforeStep) {
+  std::vector<std::size_t> touched;
+  std::vector<FactorIndex> removed;
+  // Confirmations: the step's assigned detections count towards M; a confirmed landmark loses its weak prior.
+  std::vector<bool> seen(static_cast<std::size_t>(landmarks()), false);
+  for (std::size_t r = firstRecordOfStep_[static_cast<std::size_t>(k)]; r < records_.size(); ++r) {
+    if (!records_[r].assigned) continue;
+    const int j = *records_[r].assigned;
+    seen[static_cast<std::size_t>(j)] = true;
+    confirmIfDue(j, time, removed);
+  }
+  // Drops: a provisional landmark born before this step, in the field now and not seen, uses up its patience.
+  const Values& estimate = smoother_->estimate();
+  const Value& robot = estimate.value(poseKeys_[static_cast<std::size_t>(k)]);
+  for (int j = 0; j < landmarksBeforeStep; ++j) {
+    if (!lifecycle_.provisional(j) || seen[static_cast<std::size_t>(j)]) continue;
+    const Vector inSensor = factory_.positionInSensorFrame(robot, estimate.value(landmarks_[j].key));
+    if (unassigned_.inField(inSensor) && lifecycle_.passedInField(j)) dropLandmark(j, touched);
+  }
+  mergeProvisionalLandmarks(touched, removed);
+  applyEdits(std::move(touched), std::move(removed));
+}
+
+bool SemanticSlam::repairExclusion(std::size_t first, std::size_t end) {
+  // (§4) Per step: the landmark each mixture uses at the estimate; where two share one, the one whose component
+  // costs more (½ chi2 + log-normaliser − log weight, the mixture's own cost) loses it.
+  const Values& estimate = smoother_->estimate();
+  std::vector<std::size_t> touched;
+  std::size_t r = first;
+  while (r < end) {
+    const int step = records_[r].step;
+    std::map<int, std::vector<std::pair<double, std::size_t>>> users;  // landmark → (cost, record)
+    for (; r < end && records_[r].step == step; ++r) {
+      const DetectionRecord& record = records_[r];
+      if (!record.mixture) continue;
+      const auto& mixture = static_cast<const MaxMixtureFactor&>(*record.mixture);
+      const int active = mixture.activeComponent(estimate);
+      if (active >= static_cast<int>(record.candidates.size())) continue;  // the null hypothesis
+      const MaxMixtureFactor::Component& component = mixture.components()[static_cast<std::size_t>(active)];
+      const double cost = 0.5 * component.factor->chi2(estimate) + component.factor->logNormalizer().value_or(0.0) -
+                          std::log(component.weight);
+      users[record.candidates[static_cast<std::size_t>(active)]].push_back({cost, r});
+    }
+    for (auto& [landmark, costs] : users) {
+      if (costs.size() < 2) continue;
+      std::sort(costs.begin(), costs.end());
+      for (std::size_t i = 1; i < costs.size(); ++i) {
+        DetectionRecord& record = records_[costs[i].second];
+        const auto found = std::find(record.candidates.begin(), record.candidates.end(), landmark);
+        const auto c = found - record.candidates.begin();
+        record.candidates.erase(found);
+        record.weights.erase(record.weights.begin() + c);
+        if (!record.logLikelihoods.empty()) record.logLikelihoods.erase(record.logLikelihoods.begin() + c);
+        if (record.assigned == landmark) record.assigned.reset();
+        if (!record.candidates.empty()) {
+          record.weights = record.logLikelihoods.empty() ? normalizeWeights(record.weights)
+                                                         : normalizeLogWeights(record.logLikelihoods);
+        }
+        touched.push_back(costs[i].second);
+      }
+    }
+  }
+  if (touched.empty()) return false;
+  applyEdits(std::move(touched), {});
+  return true;
+}
+
 void SemanticSlam::finish() {
+  if (options_.birth == BirthRule::Unassigned) {
+    // (§5) The map holds confirmed landmarks only: what is still provisional at the end was seen too briefly.
+    std::vector<std::size_t> touched;
+    for (int j = 0; j < landmarks(); ++j) {
+      if (lifecycle_.provisional(j)) dropLandmark(j, touched);
+    }
+    applyEdits(std::move(touched), {});
+  }
   if (options_.strategy == AssociationStrategy::Gpda) expectationMaximization(0, 10);
   smoother_->converge();
+  if (options_.birth == BirthRule::Unassigned) {
+    while (repairExclusion(0, records_.size())) smoother_->converge();  // (§4) at the final estimate
+  }
 }
 
 std::pair<std::optional<int>, double> SemanticSlam::chosenAssociation(const DetectionRecord& record) const {
   if (record.knownLandmark) return {*record.knownLandmark, 1.0};
   if (record.createdLandmark) return {*record.createdLandmark, 1.0};
+  if (record.rejected) return {std::nullopt, 1.0};  // its provisional landmark was dropped (§5)
   if (record.candidates.empty()) return {std::nullopt, 1.0};  // `known`: clutter, no factor
   if (record.mixture) {
     const auto& mixture = static_cast<const MaxMixtureFactor&>(*record.mixture);
@@ -459,6 +785,7 @@ RunResult SemanticSlam::result(bool withPoseCovariances) const {
     }
   }
   for (int j = 0; j < landmarks(); ++j) {
+    if (!lifecycle_.active(j)) continue;  // dropped or merged (§5)
     const bool hasClasses = header_.semantic != SemanticKind::None;
     result.landmarks.push_back({j, toLandmarkState(estimate.value(landmarks_[j].key)),
                                 hasClasses ? landmarks_[j].classBelief.probabilities() : Vector()});

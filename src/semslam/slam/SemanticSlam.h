@@ -25,11 +25,20 @@
 //      (weights recomputed at the current estimate, Σ_joint = 0, i.e. N(z; h(X̂), R) times the semantic term, the
 //      same likelihood code with no state uncertainty) and M-steps (factors replaced, re-solve);
 //   5. class beliefs: each candidate's P(c | l) is updated with the detection's class likelihoods, tempered by its
-//      association weight (ClassBelief.h).
+//      association weight (ClassBelief.h);
+//   6. with BirthRule::Unassigned, the landmarks' lifecycle (docs/association-front-end.md §5): a landmark born
+//      from an unassigned detection is provisional (a weak prior, σ = r_max per axis, keeps it well-posed whatever
+//      happens to its detections) until the M-of-N rule (LandmarkLifecycle.h) confirms it (its prior is removed),
+//      drops it (its detections are left on no landmark) or a merge test puts it into a mapped landmark (its
+//      detections move there); the graph edits of a step are one smoother update. Then exclusion is repaired
+//      (§4): while two of the step's mixtures use one landmark at the estimate, the worse of them loses that
+//      component, and the step is re-solved. finish() drops what is still provisional and repairs every step.
 // Decisions where paper B is silent are in docs/max-mixtures.md.
 //
-// Invariants: landmark indices are dense, 0-based, in creation order, and are the landmark ids of every output;
-// every detection of every step processed has exactly one DetectionRecord.
+// Invariants: landmark indices are dense, 0-based, in creation order, and are the landmark ids of every output
+// (a dropped or merged landmark keeps its index and its variable, held by its weak prior, but leaves the map and
+// every candidate list); every detection of every step processed has exactly one DetectionRecord; a record's
+// `factors` are exactly the smoother factors in force for its detection.
 
 #include <functional>
 #include <map>
@@ -40,6 +49,7 @@
 
 #include "semslam/association/AssociationGate.h"
 #include "semslam/association/ClassBelief.h"
+#include "semslam/association/LandmarkLifecycle.h"
 #include "semslam/association/MeasurementFactory.h"
 #include "semslam/association/UnassignedHypothesis.h"
 #include "semslam/models/RunResult.h"
@@ -71,6 +81,10 @@ struct SemanticSlamOptions {
   double minimumGpdaWeight = 1e-4;///< gpda: weights are clamped below at this
   bool warmStart = true;          ///< mm, mm-nh: solve each step first with every detection's most likely
                                   ///< candidate, then switch to the mixtures (docs/max-mixtures.md)
+  double warmStartMinimumPosterior = 0.95;  ///< the warm start uses a candidate only when its posterior (against
+                                  ///< the other candidates and, with BirthRule::Unassigned, the unassigned
+                                  ///< hypothesis) reaches this: an unambiguous one; 0: every detection
+  LandmarkLifecycle::Rule provisional;  ///< BirthRule::Unassigned: the M-of-N rule of provisional landmarks
   SmootherFactory smoother;       ///< the back end; empty: the IncrementalSmoother
 };
 
@@ -90,6 +104,7 @@ struct DetectionRecord {
   std::vector<double> logLikelihoods;   ///< BirthRule::Unassigned: ln p(z | candidate), geometric × semantic
   double unassignedLogLikelihood = 0.0; ///< BirthRule::Unassigned: ln p(z | unassigned)
   std::optional<int> assigned;          ///< BirthRule::Unassigned: the joint assignment's landmark (none: new)
+  bool rejected = false;                ///< the provisional landmark it started was dropped: it is on no landmark
 };
 
 class SemanticSlam {
@@ -101,7 +116,9 @@ class SemanticSlam {
 
   const Smoother& smoother() const { return *smoother_; }
   int steps() const { return static_cast<int>(poseKeys_.size()); }
+  /// Landmark variables ever created (dropped and merged ones included: indices are never reused).
   int landmarks() const { return static_cast<int>(landmarks_.size()); }
+  const LandmarkLifecycle& lifecycle() const { return lifecycle_; }
   const std::vector<DetectionRecord>& detections() const { return records_; }
 
   /// Ends the run: gpda's final EM over every detection. Call once, after the last step.
@@ -116,13 +133,21 @@ class SemanticSlam {
   struct Landmark {
     Key key;
     ClassBelief classBelief;
+    std::vector<std::size_t> records;       // records that start it or hold it as a candidate
+    std::optional<FactorIndex> weakPrior;   // a provisional landmark's prior, while it has one
   };
 
   /// The index (into record.candidates) of the candidate the detection's plain factor and warm start use: the
   /// joint assignment's landmark where there is one, else the most likely candidate.
   static int bestCandidate(const DetectionRecord& record);
   void addFirstPose(FactorGraph& factors, Values& values);
-  int addLandmark(const Value& value, std::optional<int> truthId, Values& values);
+  /// A landmark at `value`: provisional (born at `birthTime`) or, without a birth time, confirmed.
+  int addLandmark(const Value& value, std::optional<int> truthId, Values& values,
+                  std::optional<double> birthTime = std::nullopt);
+  /// The weak prior of a provisional landmark at `value` (§5): σ = r_max per position axis, π per rotation axis.
+  FactorPtr weakPriorFactor(int landmark, const Value& value) const;
+  /// Posterior of the best candidate against the others and (BirthRule::Unassigned) the unassigned hypothesis.
+  static double bestPosterior(const DetectionRecord& record);
   /// p_geo(z | landmark) of step 2 at the current estimate: the detection's factor to `landmark` from the newest
   /// pose, linearised under the pair's block of `marginal` (MarginalLikelihood.h). Both birth rules use it.
   LinearizedLikelihood geometricLikelihood(const JointMarginal& marginal, const Landmark& landmark,
@@ -138,6 +163,23 @@ class SemanticSlam {
   void assignJointly(std::size_t first);
   /// The factors of one detection with candidates under the strategy (step 3).
   std::vector<FactorPtr> associationFactors(DetectionRecord& record) const;
+  /// The factors a record stands for now: its own landmark's factor, its candidates' factors, or none.
+  std::vector<FactorPtr> recordFactors(DetectionRecord& record) const;
+  /// Replaces the factors of `touched` records by recordFactors() and removes `removed`, in one update.
+  void applyEdits(std::vector<std::size_t> touched, std::vector<FactorIndex> removed);
+  /// Step 6 (§5) after step `k`'s solve: confirmations, drops of landmarks in the field, merges; one update.
+  void updateLifecycle(int k, double time, int landmarksBeforeStep);
+  void dropLandmark(int landmark, std::vector<std::size_t>& touched);
+  void mergeLandmark(int landmark, int into, std::vector<std::size_t>& touched, std::vector<FactorIndex>& removed);
+  /// Merge tests of every provisional landmark against the active landmarks within the sensor's range of it.
+  void mergeProvisionalLandmarks(std::vector<std::size_t>& touched, std::vector<FactorIndex>& removed);
+  /// A detection at `time` on `landmark` counts towards confirming it; once confirmed, its weak prior goes.
+  void confirmIfDue(int landmark, double time, std::vector<FactorIndex>& removed);
+  /// Steps at which a detection was put on `landmark` (started it, assigned to it, or known to be it).
+  std::vector<int> stepsOn(int landmark) const;
+  /// (§4) Records [first, end): where two mixtures of one step use one landmark at the estimate, all but the best
+  /// lose that candidate; one update. Returns whether anything changed.
+  bool repairExclusion(std::size_t first, std::size_t end);
   FactorPtr gpdaFactor(const DetectionRecord& record, int landmark, double weight) const;
   /// E-step for one gpda record at the current estimate; returns whether any factor changed.
   bool reweight(DetectionRecord& record);
@@ -148,12 +190,14 @@ class SemanticSlam {
   MeasurementFactory factory_;
   AssociationGate gate_;
   UnassignedHypothesis unassigned_;
+  LandmarkLifecycle lifecycle_;
   std::unique_ptr<Smoother> smoother_;
   std::vector<Key> poseKeys_;
   std::vector<Landmark> landmarks_;
   std::map<int, int> landmarkOfTruthId_;  // `known` and map priors: the log's landmark id → landmark index
   std::vector<DetectionRecord> records_;
   std::vector<std::size_t> firstRecordOfStep_;
+  std::vector<double> stepTimes_;
 };
 
 }  // namespace semslam

@@ -1,0 +1,85 @@
+#pragma once
+// LandmarkLifecycle: whether each landmark of a map is provisional, confirmed or gone, by the M-of-N rule of
+// docs/association-front-end.md §5. It decides; the caller edits the graph.
+//
+// A landmark starts either
+//   confirmed    (a map prior, a landmark of known association, every landmark under paper B's threshold birth
+//                rule), or
+//   provisional  (born from a detection that the joint assignment left unassigned: a new landmark or clutter,
+//                which one step cannot tell apart).
+// A provisional landmark becomes
+//   confirmed  once M = `confirmations` detections assigned to it, its birth detection included, are each at
+//              least Δt after the previous one counted, Δt = `spacingPeriods` × the median step period seen so far
+//              (a static object is seen again later; something passing through, or a burst, is not);
+//   dropped    once it has been inside the sensor's field on N = `patience` steps after its birth without being
+//              confirmed (it should have been seen again);
+//   merged     into another landmark, when the caller's test (§5) says the two are one.
+//
+// Invariants: indices are dense and 0-based, in the order of add*(); states move only Provisional → Confirmed,
+// Provisional → Dropped, Provisional → Merged; every counter refers to steps after the landmark's birth.
+
+#include <optional>
+#include <vector>
+
+namespace semslam {
+
+/// The M-of-N rule's numbers (docs/association-front-end.md §5 says where they come from).
+struct ProvisionalLandmarkRule {
+  int confirmations = 2;        ///< M
+  double spacingPeriods = 3.0;  ///< Δt in median step periods
+  int patience = 10;            ///< N: in-field steps without confirmation before a drop
+};
+
+class LandmarkLifecycle {
+ public:
+  enum class State { Provisional, Confirmed, Dropped, Merged };
+  using Rule = ProvisionalLandmarkRule;
+
+  /// Throws std::invalid_argument for M < 1, N < 1 or a negative or non-finite spacing.
+  explicit LandmarkLifecycle(Rule rule = {});
+
+  const Rule& rule() const { return rule_; }
+
+  /// Each step's time, in order (for the median step period).
+  void observeStepTime(double time);
+  /// Δt: spacingPeriods × the median of the step periods seen so far (0 before the second step).
+  double minimumSpacing() const;
+
+  /// A new landmark; returns its index.
+  int addConfirmed();
+  int addProvisional(double birthTime);
+
+  State state(int landmark) const { return landmarks_.at(static_cast<std::size_t>(landmark)).state; }
+  bool provisional(int landmark) const { return state(landmark) == State::Provisional; }
+  /// Provisional or confirmed: a landmark of the map that detections may be assigned to.
+  bool active(int landmark) const;
+  /// The landmark a merged one went into (followed to the end of a chain of merges); nullopt if not merged.
+  std::optional<int> mergedInto(int landmark) const;
+  int size() const { return static_cast<int>(landmarks_.size()); }
+
+  /// A detection at `time` assigned to `landmark`. Returns true when this confirms a provisional landmark.
+  bool observe(int landmark, double time);
+  /// A step after its birth at which provisional `landmark` was inside the sensor's field. Returns true when the
+  /// landmark has now used up its patience unconfirmed: the caller must drop it.
+  bool passedInField(int landmark);
+
+  void drop(int landmark);
+  void merge(int landmark, int into);
+
+ private:
+  struct Entry {
+    State state = State::Confirmed;
+    int counted = 0;             // detections counted towards M
+    double lastCountedTime = 0;  // time of the last counted one
+    int inFieldSteps = 0;
+    int mergedInto = -1;
+  };
+  Entry& provisionalEntry(int landmark);
+
+  Rule rule_;
+  std::vector<Entry> landmarks_;
+  std::vector<double> sortedPeriods_;
+  std::optional<double> lastStepTime_;
+};
+
+}  // namespace semslam

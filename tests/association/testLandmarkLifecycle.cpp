@@ -1,0 +1,86 @@
+// The M-of-N rule of provisional landmarks (docs/association-front-end.md §5).
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "semslam/association/LandmarkLifecycle.h"
+
+using namespace semslam;
+using State = LandmarkLifecycle::State;
+
+namespace {
+
+/// A lifecycle that has seen steps at 0, 1, ..., steps − 1 seconds (median period 1 s).
+LandmarkLifecycle withUnitSteps(LandmarkLifecycle::Rule rule, int steps) {
+  LandmarkLifecycle lifecycle(rule);
+  for (int k = 0; k < steps; ++k) lifecycle.observeStepTime(k);
+  return lifecycle;
+}
+
+}  // namespace
+
+TEST(LandmarkLifecycle, MinimumSpacingIsPeriodsTimesTheMedianStepPeriod) {
+  LandmarkLifecycle lifecycle({2, 3.0, 10});
+  EXPECT_EQ(lifecycle.minimumSpacing(), 0.0);
+  for (double t : {0.0, 1.0, 1.5, 3.5, 4.5, 5.5}) lifecycle.observeStepTime(t);  // periods 1, .5, 2, 1, 1
+  EXPECT_DOUBLE_EQ(lifecycle.minimumSpacing(), 3.0);
+  lifecycle.observeStepTime(5.6);  // periods .1 .5 1 1 1 2: median (1 + 1) / 2
+  EXPECT_DOUBLE_EQ(lifecycle.minimumSpacing(), 3.0);
+  lifecycle.observeStepTime(5.7);  // .1 .1 .5 1 1 1 2: median 1
+  lifecycle.observeStepTime(5.8);  // .1 .1 .1 .5 1 1 1 2: median (.5 + 1) / 2
+  EXPECT_DOUBLE_EQ(lifecycle.minimumSpacing(), 2.25);
+}
+
+TEST(LandmarkLifecycle, ConfirmsOnlyWithDetectionsSpacedAtLeastDeltaT) {
+  LandmarkLifecycle lifecycle = withUnitSteps({2, 3.0, 10}, 5);  // Δt = 3 s
+  const int j = lifecycle.addProvisional(10.0);
+  EXPECT_TRUE(lifecycle.provisional(j));
+  EXPECT_FALSE(lifecycle.observe(j, 11.0));  // a burst: too soon, not counted
+  EXPECT_FALSE(lifecycle.observe(j, 12.0));
+  EXPECT_TRUE(lifecycle.provisional(j));
+  EXPECT_TRUE(lifecycle.observe(j, 13.0));  // exactly Δt after the birth
+  EXPECT_EQ(lifecycle.state(j), State::Confirmed);
+  EXPECT_FALSE(lifecycle.observe(j, 20.0));  // already confirmed: nothing to decide
+}
+
+TEST(LandmarkLifecycle, ThreeConfirmationsCountFromTheLastCountedDetection) {
+  LandmarkLifecycle lifecycle = withUnitSteps({3, 2.0, 10}, 3);  // Δt = 2 s
+  const int j = lifecycle.addProvisional(0.0);
+  EXPECT_FALSE(lifecycle.observe(j, 2.0));  // counted: 2 of 3
+  EXPECT_FALSE(lifecycle.observe(j, 3.0));  // 1 s after the last counted: not counted
+  EXPECT_TRUE(lifecycle.observe(j, 4.0));
+}
+
+TEST(LandmarkLifecycle, DropsAfterPatienceInFieldSteps) {
+  LandmarkLifecycle lifecycle = withUnitSteps({2, 3.0, 4}, 3);
+  const int j = lifecycle.addProvisional(0.0);
+  EXPECT_FALSE(lifecycle.passedInField(j));
+  EXPECT_FALSE(lifecycle.passedInField(j));
+  EXPECT_FALSE(lifecycle.passedInField(j));
+  EXPECT_TRUE(lifecycle.passedInField(j));
+  lifecycle.drop(j);
+  EXPECT_EQ(lifecycle.state(j), State::Dropped);
+  EXPECT_FALSE(lifecycle.active(j));
+  EXPECT_THROW(lifecycle.drop(j), std::logic_error);
+}
+
+TEST(LandmarkLifecycle, MergesFollowChains) {
+  LandmarkLifecycle lifecycle = withUnitSteps({}, 2);
+  const int mapped = lifecycle.addConfirmed();
+  const int a = lifecycle.addProvisional(0.0);
+  const int b = lifecycle.addProvisional(0.0);
+  lifecycle.merge(b, a);
+  lifecycle.merge(a, mapped);
+  EXPECT_EQ(lifecycle.mergedInto(b), mapped);
+  EXPECT_EQ(lifecycle.mergedInto(a), mapped);
+  EXPECT_EQ(lifecycle.mergedInto(mapped), std::nullopt);
+  EXPECT_THROW(lifecycle.merge(mapped, a), std::logic_error);  // a confirmed landmark does not merge
+}
+
+TEST(LandmarkLifecycle, OneConfirmationMeansEveryBirthIsConfirmed) {
+  LandmarkLifecycle lifecycle({1, 3.0, 10});
+  EXPECT_EQ(lifecycle.state(lifecycle.addProvisional(0.0)), State::Confirmed);
+  EXPECT_THROW(LandmarkLifecycle({0, 3.0, 10}), std::invalid_argument);
+  EXPECT_THROW(LandmarkLifecycle({2, -1.0, 10}), std::invalid_argument);
+  EXPECT_THROW(LandmarkLifecycle({2, 3.0, 0}), std::invalid_argument);
+}
