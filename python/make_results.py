@@ -15,6 +15,7 @@ import subprocess
 import sys
 import tempfile
 
+import results_association
 import results_max_mixtures
 
 POSE_GRAPHS = [
@@ -241,7 +242,7 @@ def hybrid_section(semslam, data, scratch, python):
     return lines
 
 
-SECTIONS = ["pose-graphs", "evo", "datasets", "hybrid", "max-mixtures", "robustness"]
+SECTIONS = ["pose-graphs", "evo", "datasets", "hybrid", "max-mixtures", "robustness", "association"]
 
 
 def section_lines(name, semslam, data, scratch):
@@ -259,6 +260,8 @@ def section_lines(name, semslam, data, scratch):
                                                          lambda command: shown(command, data))
     elif name == "robustness":
         body = results_max_mixtures.robustness_sections(semslam, data, scratch, lambda command: shown(command, data))
+    elif name == "association":
+        body = results_association.association_section(semslam, data, scratch, lambda command: shown(command, data))
     else:
         sys.exit(f"make_results.py: unknown section {name} ({', '.join(SECTIONS)})")
     return [f"<!-- section:{name} -->"] + body + [f"<!-- end:{name} -->", ""]

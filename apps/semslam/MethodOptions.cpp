@@ -27,12 +27,26 @@ void addSemanticSlamOptions(CLI::App* command, SemanticSlamOptions& options) {
       ->transform(CLI::CheckedTransformer(std::map<std::string, BirthRule>{{"threshold", BirthRule::Threshold},
                                                                            {"unassigned", BirthRule::Unassigned}}))
       ->default_str("threshold");
+  command->add_option("--confirmations", options.provisional.confirmations,
+                      "birth unassigned: detections, each 3 median step periods after the last, that confirm a "
+                      "provisional landmark (M)")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
+  command->add_option("--patience", options.provisional.patience,
+                      "birth unassigned: steps in the sensor's field after which an unconfirmed landmark is dropped (N)")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
   command->add_option("--unassigned-rate", options.unassignedRate,
                       "birth unassigned: expected unassigned detections (births + clutter) per step")
       ->check(CLI::Range(1e-9, 1e9))
       ->capture_default_str();
   command->add_flag("--no-warm-start{false}", options.warmStart,
                     "mm, mm-nh: choose mixture components at the odometry prediction (docs/max-mixtures.md)");
+  command->add_option("--warm-start-posterior", options.warmStartMinimumPosterior,
+                      "mm, mm-nh: warm-start a detection only on a candidate of at least this posterior "
+                      "(0: every detection; docs/association-front-end.md)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
 }
 
 void addHybridOptions(CLI::App* command, HybridOptions& options) {

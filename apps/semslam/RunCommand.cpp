@@ -1,7 +1,9 @@
 // semslam run --method M --in LOG --out DIR: one estimation method over one measurement log, scored against its
 // truth (run/RunMethod.h: runMethod, writeMethodRun). DIR gets metrics.json (docs/metrics.md) and the run folder
 // (src/semslam/io/RunFolder.h; hypotheses.jsonl too for the hybrid methods). A one-line summary goes to standard
-// output.
+// output. With --on-known-trajectory the method runs with its poses pinned to the known-association estimate (and
+// --pose-error-scale s: moved inside s times its covariance), what association alone could reach on the log
+// (run/KnownTrajectoryCeiling.h).
 
 #include <cstdio>
 #include <memory>
@@ -13,6 +15,7 @@
 #include "semslam/core/InputError.h"
 #include "semslam/core/ProgressBar.h"
 #include "semslam/io/MeasurementLogFile.h"
+#include "semslam/run/KnownTrajectoryCeiling.h"
 #include "semslam/run/RunMethod.h"
 
 namespace semslam::cli {
@@ -24,6 +27,8 @@ struct RunArguments {
   std::string in;
   std::string out;
   bool noCovariances = false;
+  bool onKnownTrajectory = false;
+  double poseErrorScale = 0.0;
   MethodOptions options;
 };
 
@@ -54,9 +59,14 @@ void run(RunArguments arguments) {
   }
   MethodRun result;
   try {
-    result = runMethod(log, options, [&progress](int done, int) {
-      if (progress) progress->update(done);
-    });
+    if (arguments.onKnownTrajectory) {
+      result = runOnKnownTrajectory(log, options, arguments.poseErrorScale,
+                                    static_cast<std::uint32_t>(options.hybrid.seed));
+    } else {
+      result = runMethod(log, options, [&progress](int done, int) {
+        if (progress) progress->update(done);
+      });
+    }
   } catch (const std::invalid_argument& error) {
     throw InputError(arguments.in, 0, error.what());
   }
@@ -82,7 +92,14 @@ void addRunCommand(CLI::App& app) {
   addSemanticSlamOptions(command, arguments->options.slam);
   command->add_flag("--no-covariances", arguments->noCovariances,
                     "skip the marginal covariance of every pose (no NEES, no ellipses; faster)");
-  command->add_option("--seed", arguments->options.hybrid.seed, "hybrid: seed of the Monte Carlo draws")
+  command->add_flag("--on-known-trajectory", arguments->onKnownTrajectory,
+                    "paper B's methods: pin the poses to the known-association estimate (the association ceiling)");
+  command->add_option("--pose-error-scale", arguments->poseErrorScale,
+                      "with --on-known-trajectory: move each pose k by a draw from N(0, s² Σ_k), Σ_k its known-DA covariance")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  command->add_option("--seed", arguments->options.hybrid.seed,
+                      "hybrid: seed of the Monte Carlo draws; --pose-error-scale: seed of the pose errors")
       ->capture_default_str();
   addHybridOptions(command, arguments->options.hybrid);
   command->callback([arguments]() { run(*arguments); });

@@ -205,9 +205,10 @@ TEST(MrclamConverter, SameSeedSameBytesAndResidualsReported) {
   EXPECT_GT(residuals.detectionsEvaluated, 0u);
   EXPECT_EQ(residuals.detectionsClutter, stats.clutter);
   ASSERT_EQ(residuals.detection.size(), 2u);
-  // Robust std within a factor of two of the stated sigmas (the plain std has the data's outliers).
-  EXPECT_NEAR(residuals.detection[0].robustStd / kMrclamRangeSigma, 1.0, 0.5);
-  EXPECT_NEAR(residuals.detection[1].robustStd / kMrclamBearingSigma, 1.0, 0.5);
+  // The stated sigmas hold about 95 % of this robot's residuals within 1.96σ, as their Gaussian would (calibrated
+  // on the five robots pooled; the MAD-based sigmas 0.13 m and 0.01 rad held 89 % of the ranges here).
+  EXPECT_NEAR(residuals.detection[0].within95, 0.95, 0.04);
+  EXPECT_NEAR(residuals.detection[1].within95, 0.95, 0.07);
   std::printf("%s", formatResidualStatistics(residuals).c_str());
 }
 

@@ -70,6 +70,9 @@ ComponentResidualStatistics summarise(const std::string& name, const std::vector
   s.median = median(residual);
   std::vector<double> deviations(s.count);
   for (std::size_t i = 0; i < s.count; ++i) deviations[i] = std::abs(residual[i] - s.median);
+  std::size_t inside = 0;
+  for (std::size_t i = 0; i < s.count; ++i) inside += deviations[i] <= 1.96 * std::sqrt(variance[i]);
+  s.within95 = static_cast<double>(inside) / n;
   s.robustStd = 1.4826 * median(std::move(deviations));
   return s;
 }
@@ -210,13 +213,14 @@ std::string formatResidualStatistics(const LogResidualStatistics& statistics) {
   std::string text;
   char line[256];
   auto table = [&](const char* title, const std::vector<ComponentResidualStatistics>& components) {
-    std::snprintf(line, sizeof line, "%-10s %-10s %8s %11s %11s %11s %11s %11s %9s\n", title, "component", "count",
-                  "mean", "std", "robust std", "stated std", "std/stated", "norm. std");
+    std::snprintf(line, sizeof line, "%-10s %-10s %8s %11s %11s %11s %11s %11s %9s %9s\n", title, "component", "count",
+                  "mean", "std", "robust std", "stated std", "std/stated", "norm. std", "in 1.96σ");
     text += line;
     for (const ComponentResidualStatistics& c : components) {
       const double ratio = c.statedStd > 0.0 ? c.std / c.statedStd : 0.0;
-      std::snprintf(line, sizeof line, "%-10s %-10s %8zu %11.4g %11.4g %11.4g %11.4g %11.3f %9.3f\n", "",
-                    c.name.c_str(), c.count, c.mean, c.std, c.robustStd, c.statedStd, ratio, c.normalizedStd);
+      std::snprintf(line, sizeof line, "%-10s %-10s %8zu %11.4g %11.4g %11.4g %11.4g %11.3f %9.3f %9.3f\n", "",
+                    c.name.c_str(), c.count, c.mean, c.std, c.robustStd, c.statedStd, ratio, c.normalizedStd,
+                    c.within95);
       text += line;
     }
   };

@@ -33,6 +33,8 @@ struct ComponentResidualStatistics {
   double robustStd = 0.0;      ///< 1.4826 · MAD
   double statedStd = 0.0;      ///< sqrt(mean Σ_ii)
   double normalizedStd = 0.0;  ///< std of r_i / sqrt(Σ_ii)
+  double within95 = 0.0;       ///< fraction with |r_i − median| ≤ 1.96 sqrt(Σ_ii): 0.95 for stated σ that cover
+                               ///< the data as its Gaussian would (well below: the gate and likelihoods are too narrow)
 };
 
 struct LogResidualStatistics {

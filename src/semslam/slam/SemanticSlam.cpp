@@ -511,6 +511,21 @@ double SemanticSlam::bestPosterior(const DetectionRecord& record) {
   return normalizeLogWeights(logWeights)[best];
 }
 
+bool SemanticSlam::removeCandidate(DetectionRecord& record, int landmark) {
+  const auto found = std::find(record.candidates.begin(), record.candidates.end(), landmark);
+  if (found == record.candidates.end()) return false;
+  const auto c = found - record.candidates.begin();
+  record.candidates.erase(found);
+  record.weights.erase(record.weights.begin() + c);
+  if (!record.logLikelihoods.empty()) record.logLikelihoods.erase(record.logLikelihoods.begin() + c);
+  if (record.assigned == landmark) record.assigned.reset();
+  if (!record.candidates.empty()) {
+    record.weights = record.logLikelihoods.empty() ? normalizeWeights(record.weights)
+                                                   : normalizeLogWeights(record.logLikelihoods);
+  }
+  return true;
+}
+
 std::vector<int> SemanticSlam::stepsOn(int landmark) const {
   std::vector<int> steps;
   for (std::size_t r : landmarks_[landmark].records) {
@@ -532,17 +547,7 @@ void SemanticSlam::dropLandmark(int landmark, std::vector<std::size_t>& touched)
       record.createdLandmark.reset();
       record.rejected = true;
     } else {
-      const auto found = std::find(record.candidates.begin(), record.candidates.end(), landmark);
-      if (found == record.candidates.end()) continue;
-      const auto c = found - record.candidates.begin();
-      record.candidates.erase(found);
-      record.weights.erase(record.weights.begin() + c);
-      if (!record.logLikelihoods.empty()) record.logLikelihoods.erase(record.logLikelihoods.begin() + c);
-      if (record.assigned == landmark) record.assigned.reset();
-      if (!record.candidates.empty()) {
-        record.weights = record.logLikelihoods.empty() ? normalizeWeights(record.weights)
-                                                       : normalizeLogWeights(record.logLikelihoods);
-      }
+      if (!removeCandidate(record, landmark)) continue;
     }
     touched.push_back(r);
   }
@@ -566,16 +571,15 @@ void SemanticSlam::mergeLandmark(int landmark, int into, std::vector<std::size_t
       if (found == record.candidates.end()) continue;
       const auto c = found - record.candidates.begin();
       target.classBelief.update(record.semanticLikelihoods, record.weights[c]);
+      const bool wasAssigned = record.assigned == landmark;
       if (std::find(record.candidates.begin(), record.candidates.end(), into) != record.candidates.end()) {
-        record.candidates.erase(found);  // already a candidate: one entry, the one it had
-        record.weights.erase(record.weights.begin() + c);
-        if (!record.logLikelihoods.empty()) record.logLikelihoods.erase(record.logLikelihoods.begin() + c);
-        record.weights = record.logLikelihoods.empty() ? normalizeWeights(record.weights)
-                                                       : normalizeLogWeights(record.logLikelihoods);
-      } else {
-        *found = into;  // its likelihood under the landmark it merged into: the one computed for the merged one
+        removeCandidate(record, landmark);  // already a candidate (and in target.records): one entry, its own
+        if (wasAssigned) record.assigned = into;
+        touched.push_back(r);
+        continue;
       }
-      if (record.assigned == landmark) record.assigned = into;
+      *found = into;  // its likelihood under the landmark it merged into: the one computed for the merged one
+      if (wasAssigned) record.assigned = into;
     }
     target.records.push_back(r);
     touched.push_back(r);
@@ -716,17 +720,7 @@ bool SemanticSlam::repairExclusion(std::size_t first, std::size_t end) {
       if (costs.size() < 2) continue;
       std::sort(costs.begin(), costs.end());
       for (std::size_t i = 1; i < costs.size(); ++i) {
-        DetectionRecord& record = records_[costs[i].second];
-        const auto found = std::find(record.candidates.begin(), record.candidates.end(), landmark);
-        const auto c = found - record.candidates.begin();
-        record.candidates.erase(found);
-        record.weights.erase(record.weights.begin() + c);
-        if (!record.logLikelihoods.empty()) record.logLikelihoods.erase(record.logLikelihoods.begin() + c);
-        if (record.assigned == landmark) record.assigned.reset();
-        if (!record.candidates.empty()) {
-          record.weights = record.logLikelihoods.empty() ? normalizeWeights(record.weights)
-                                                         : normalizeLogWeights(record.logLikelihoods);
-        }
+        removeCandidate(records_[costs[i].second], landmark);
         touched.push_back(costs[i].second);
       }
     }

@@ -175,6 +175,9 @@ class SemanticSlam {
   void mergeProvisionalLandmarks(std::vector<std::size_t>& touched, std::vector<FactorIndex>& removed);
   /// A detection at `time` on `landmark` counts towards confirming it; once confirmed, its weak prior goes.
   void confirmIfDue(int landmark, double time, std::vector<FactorIndex>& removed);
+  /// Removes `landmark` from the record's candidates (weight, likelihood, assignment), renormalising the rest.
+  /// Returns false when it was not a candidate.
+  static bool removeCandidate(DetectionRecord& record, int landmark);
   /// Steps at which a detection was put on `landmark` (started it, assigned to it, or known to be it).
   std::vector<int> stepsOn(int landmark) const;
   /// (§4) Records [first, end): where two mixtures of one step use one landmark at the estimate, all but the best

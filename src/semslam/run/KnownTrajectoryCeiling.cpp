@@ -1,0 +1,76 @@
+#include "semslam/run/KnownTrajectoryCeiling.h"
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+#include "semslam/geometry/Manifold.h"
+#include "semslam/models/Sampling.h"
+
+namespace semslam {
+namespace {
+
+int tangentDimension(const Pose& pose) { return std::holds_alternative<SE2>(pose) ? 3 : 6; }
+
+Matrix pinnedCovariance(const Pose& pose) {
+  const int d = tangentDimension(pose);
+  return Matrix::Identity(d, d) * (kPinnedSigma * kPinnedSigma);
+}
+
+Pose motionBetween(const Pose& from, const Pose& to) {
+  if (const auto* se2 = std::get_if<SE2>(&from)) return se2->between(std::get<SE2>(to));
+  return std::get<SE3>(from).between(std::get<SE3>(to));
+}
+
+}  // namespace
+
+MeasurementLog logOnTrajectory(const MeasurementLog& log, const std::vector<Pose>& trajectory) {
+  if (trajectory.size() != log.steps.size()) {
+    throw std::invalid_argument("logOnTrajectory: " + std::to_string(trajectory.size()) + " poses for " +
+                                std::to_string(log.steps.size()) + " steps");
+  }
+  MeasurementLog pinned = log;
+  if (trajectory.empty()) return pinned;
+  pinned.header.initialPose = PosePrior{trajectory.front(), pinnedCovariance(trajectory.front())};
+  for (std::size_t k = 1; k < pinned.steps.size(); ++k) {
+    if (!pinned.steps[k].odometry) continue;  // runMethod refuses such a log as it would the original
+    pinned.steps[k].odometry = Odometry{motionBetween(trajectory[k - 1], trajectory[k]), pinnedCovariance(trajectory[k])};
+  }
+  return pinned;
+}
+
+std::vector<Pose> perturbedTrajectory(const std::vector<Pose>& trajectory, const std::vector<Matrix>& covariances,
+                                      double scale, std::uint32_t seed) {
+  if (!(scale >= 0.0) || !std::isfinite(scale)) throw std::invalid_argument("pose error scale must be finite and >= 0");
+  if (scale == 0.0) return trajectory;
+  if (covariances.size() != trajectory.size()) throw std::invalid_argument("perturbedTrajectory: one covariance per pose");
+  std::mt19937 rng(seed);
+  std::vector<Pose> moved;
+  for (std::size_t k = 0; k < trajectory.size(); ++k) {
+    const Vector delta = scale * sampleGaussian(Vector::Zero(tangentDimension(trajectory[k])), covariances[k], rng);
+    moved.push_back(std::visit(
+        [&](const auto& pose) -> Pose { return Manifold<std::decay_t<decltype(pose)>>::retract(pose, delta); },
+        trajectory[k]));
+  }
+  return moved;
+}
+
+MethodRun runOnKnownTrajectory(const MeasurementLog& log, const MethodOptions& options, double poseErrorScale,
+                               std::uint32_t seed) {
+  if (isHybrid(options.method)) throw std::invalid_argument("the known-trajectory ceiling is for paper B's methods");
+  MethodOptions known = options;
+  known.method = Method::Known;
+  known.poseCovariances = poseErrorScale > 0.0;
+  known.runFolder = false;
+  const MethodRun reference = runMethod(log, known);
+  const std::vector<Pose> trajectory =
+      perturbedTrajectory(reference.result.poses, reference.result.poseCovariances, poseErrorScale, seed);
+  MethodRun run = runMethod(logOnTrajectory(log, trajectory), options);
+  run.result.method += "@known-trajectory";
+  run.evaluation.metrics.method = run.result.method;
+  return run;
+}
+
+}  // namespace semslam

@@ -1,0 +1,114 @@
+// The association ceiling (run/KnownTrajectoryCeiling.h): the pinned log reproduces the trajectory it is pinned to,
+// pose errors are drawn with the covariance asked for, and a method on the pinned log keeps the known-DA poses.
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "semslam/geometry/Manifold.h"
+#include "semslam/models/Sampling.h"
+#include "semslam/run/KnownTrajectoryCeiling.h"
+#include "semslam/sim/GeneratedPath.h"
+#include "semslam/sim/SemanticSimulator.h"
+
+using namespace semslam;
+
+namespace {
+
+MeasurementLog simulatedRun(int dimension) {
+  PathOptions path;
+  path.dimension = dimension;
+  path.steps = 60;
+  path.loops = 1;
+  std::mt19937 rng(5);
+  SemanticSimOptions options;
+  options.classes = 3;
+  options.landmarks = 10;
+  options.clutter = 0.3;
+  options.misclassification = 0.1;
+  options.fieldOfView = 0.0;
+  return simulateSemantic(generatePath(path, rng), options, 5);
+}
+
+/// Largest tangent distance between two trajectories of one kind.
+double largestDifference(const std::vector<Pose>& a, const std::vector<Pose>& b) {
+  double worst = 0.0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    const Vector d = std::visit(
+        [&](const auto& pose) -> Vector {
+          using T = std::decay_t<decltype(pose)>;
+          return Manifold<T>::local(pose, std::get<T>(b[k]));
+        },
+        a[k]);
+    worst = std::max(worst, d.cwiseAbs().maxCoeff());
+  }
+  return worst;
+}
+
+}  // namespace
+
+TEST(KnownTrajectoryCeiling, ThePinnedOdometryComposesBackToTheTrajectory) {
+  for (int dimension : {2, 3}) {
+    const MeasurementLog log = simulatedRun(dimension);
+    std::vector<Pose> trajectory;
+    for (const TimeStep& step : log.steps) trajectory.push_back(*step.truePose);
+    const MeasurementLog pinned = logOnTrajectory(log, trajectory);
+    ASSERT_TRUE(pinned.header.initialPose.has_value());
+    std::vector<Pose> composed = {pinned.header.initialPose->mean};
+    for (std::size_t k = 1; k < pinned.steps.size(); ++k) {
+      const Pose& increment = pinned.steps[k].odometry->increment;
+      composed.push_back(std::visit(
+          [&](const auto& previous) -> Pose {
+            using T = std::decay_t<decltype(previous)>;
+            return previous.compose(std::get<T>(increment));
+          },
+          composed.back()));
+      EXPECT_DOUBLE_EQ(pinned.steps[k].odometry->covariance(0, 0), kPinnedSigma * kPinnedSigma);
+    }
+    EXPECT_LT(largestDifference(composed, trajectory), 1e-9) << dimension << "D";
+    EXPECT_EQ(pinned.steps.size(), log.steps.size());
+    EXPECT_EQ(pinned.steps[7].detections.size(), log.steps[7].detections.size());
+    EXPECT_THROW(logOnTrajectory(log, {trajectory.front()}), std::invalid_argument);
+  }
+}
+
+TEST(KnownTrajectoryCeiling, PoseErrorsHaveTheScaledCovariance) {
+  const Matrix covariance = (Matrix(3, 3) << 0.04, 0.01, 0.0, 0.01, 0.09, 0.002, 0.0, 0.002, 0.01).finished();
+  const std::vector<Pose> trajectory(4000, Pose(SE2(1.0, 2.0, 0.3)));
+  const std::vector<Matrix> covariances(trajectory.size(), covariance);
+  EXPECT_EQ(largestDifference(perturbedTrajectory(trajectory, covariances, 0.0, 1), trajectory), 0.0);
+  const double scale = 0.5;
+  const std::vector<Pose> moved = perturbedTrajectory(trajectory, covariances, scale, 3);
+  Matrix sample = Matrix::Zero(3, 3);
+  for (const Pose& pose : moved) {
+    const Vector d = Manifold<SE2>::local(std::get<SE2>(trajectory.front()), std::get<SE2>(pose));
+    sample += d * d.transpose();
+  }
+  sample /= static_cast<double>(moved.size());
+  const Matrix expected = scale * scale * covariance;
+  // Sample variances of 4000 draws: relative standard error sqrt(2 / 4000) ≈ 2.2 %; 5 standard errors.
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(sample(i, i) / expected(i, i), 1.0, 0.11) << i;
+  EXPECT_NEAR(sample(0, 1), expected(0, 1), 0.11 * std::sqrt(expected(0, 0) * expected(1, 1)));
+  EXPECT_EQ(largestDifference(perturbedTrajectory(trajectory, covariances, scale, 3), moved), 0.0);  // seeded
+}
+
+TEST(KnownTrajectoryCeiling, AMethodOnThePinnedLogKeepsTheKnownAssociationTrajectory) {
+  const MeasurementLog log = simulatedRun(2);
+  MethodOptions known;
+  known.method = Method::Known;
+  known.runFolder = false;
+  known.poseCovariances = false;
+  const MethodRun reference = runMethod(log, known);
+  MethodOptions options;
+  options.method = Method::MaxMixtureNullHypothesis;
+  options.slam.birth = BirthRule::Unassigned;
+  options.runFolder = false;
+  options.poseCovariances = false;
+  const MethodRun ceiling = runOnKnownTrajectory(log, options, 0.0, 1);
+  EXPECT_EQ(ceiling.result.method, "mm-nh+unassigned@known-trajectory");
+  EXPECT_EQ(ceiling.evaluation.metrics.method, ceiling.result.method);
+  // Pinned at σ = 1e-4 per step beside detections of σ ≈ 0.1: the poses move by well under a millimetre.
+  EXPECT_LT(largestDifference(ceiling.result.poses, reference.result.poses), 1e-3);
+  options.method = Method::Hybrid;
+  EXPECT_THROW(runOnKnownTrajectory(log, options, 0.0, 1), std::invalid_argument);
+}
