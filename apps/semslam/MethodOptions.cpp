@@ -26,7 +26,7 @@ void addSemanticSlamOptions(CLI::App* command, SemanticSlamOptions& options) {
                       "unassigned (an unassigned hypothesis, joint assignment; docs/association-front-end.md)")
       ->transform(CLI::CheckedTransformer(std::map<std::string, BirthRule>{{"threshold", BirthRule::Threshold},
                                                                            {"unassigned", BirthRule::Unassigned}}))
-      ->default_str("threshold");
+      ->default_str("unassigned");
   command->add_option("--confirmations", options.provisional.confirmations,
                       "birth unassigned: detections, each 3 median step periods after the last, that confirm a "
                       "provisional landmark (M)")

@@ -105,7 +105,7 @@ TEST(KnownTrajectoryCeiling, AMethodOnThePinnedLogKeepsTheKnownAssociationTrajec
   options.runFolder = false;
   options.poseCovariances = false;
   const MethodRun ceiling = runOnKnownTrajectory(log, options, 0.0, 1);
-  EXPECT_EQ(ceiling.result.method, "mm-nh+unassigned@known-trajectory");
+  EXPECT_EQ(ceiling.result.method, "mm-nh@known-trajectory");
   EXPECT_EQ(ceiling.evaluation.metrics.method, ceiling.result.method);
   // Pinned at σ = 1e-4 per step beside detections of σ ≈ 0.1: the poses move by well under a millimetre.
   EXPECT_LT(largestDifference(ceiling.result.poses, reference.result.poses), 1e-3);

@@ -10,6 +10,8 @@
 #include "semslam/sim/GeneratedPath.h"
 #include "semslam/sim/SemanticSimulator.h"
 #include "semslam/run/RunMethod.h"
+#include "semslam/sim/Aliased2dScenario.h"
+#include "semslam/sim/Aliased2dSimulator.h"
 #include "support/GaussianDensity.h"
 
 using namespace semslam;
@@ -64,6 +66,7 @@ TEST(SemanticSlam, NullHypothesisTakesClutterThatMaxMixturesMustAssociate) {
   MethodOptions options;
   options.runFolder = false;
   options.slam.warmStart = false;
+  options.slam.birth = BirthRule::Threshold;  // paper B's pipeline: no provisional landmarks to drop the clutter
   options.method = Method::MaxMixtureNullHypothesis;
   const MethodRun withNull = runMethod(log, options);
   options.method = Method::MaxMixture;
@@ -99,6 +102,7 @@ TEST(SemanticSlam, FrontEndWeightsAreTheClosedFormMarginalLikelihoodTimesTheClas
 
   SemanticSlamOptions options;
   options.strategy = AssociationStrategy::MaximumLikelihood;
+  options.birth = BirthRule::Threshold;  // paper B's weights (the unassigned rule's are in testUnassignedHypothesis)
   options.gateConfidence = 1.0 - 1e-12;  // every landmark a candidate
   SemanticSlam slam(log.header, options);
   TimeStep first{0.0, std::nullopt, {}, robot};
@@ -158,4 +162,27 @@ TEST(SemanticSlam, RejectsLogsThatBreakTheStepOrder) {
   EXPECT_THROW(slam.addStep(log.steps.at(1)), std::invalid_argument);  // odometry on the first step
   slam.addStep(log.steps.at(0));
   EXPECT_THROW(slam.addStep(log.steps.at(0)), std::invalid_argument);  // no odometry after it
+}
+
+TEST(SemanticSlam, EveryMethodRunsOnAliased2dTracksWhosePosedLandmarksHaveNoObservedOrientation) {
+  // Paper A's scenario: objects with a pose, seen by a relative-position sensor, so a new landmark's orientation is
+  // observed by nothing; without its orientation prior the system was singular (ml, gpda, mm stopped).
+  for (int track = 0; track < 3; ++track) {
+    const MeasurementLog log = simulateAliased2dTrack(defaultAliased2dScenario(), 4, track, 20, 3);
+    for (BirthRule birth : {BirthRule::Threshold, BirthRule::Unassigned}) {
+      for (AssociationStrategy strategy : {AssociationStrategy::Known, AssociationStrategy::MaximumLikelihood,
+                                           AssociationStrategy::Gpda, AssociationStrategy::MaxMixture,
+                                           AssociationStrategy::MaxMixtureNullHypothesis}) {
+        MethodOptions options;
+        options.method = methodFor(strategy);
+        options.slam.birth = birth;
+        options.runFolder = false;
+        MethodRun result;
+        ASSERT_NO_THROW(result = runMethod(log, options)) << strategyName(strategy) << " track " << track;
+        EXPECT_TRUE(std::isfinite(result.evaluation.metrics.ateRmse)) << strategyName(strategy);
+        EXPECT_FALSE(result.result.landmarks.empty());
+        for (const Matrix& covariance : result.result.poseCovariances) EXPECT_TRUE(covariance.allFinite());
+      }
+    }
+  }
 }

@@ -17,6 +17,9 @@ namespace semslam {
 namespace {
 
 constexpr double kGaugeSigma = 1e-6;
+/// Position σ of a prior that holds only a landmark's orientation: information 1e-12 per m², nothing beside any
+/// detection, yet a proper Gaussian.
+constexpr double kUnconstrainedSigma = 1e6;
 /// Scale of the warm start's Cauchy kernel, in standard deviations of the detection.
 constexpr double kWarmStartCauchyScale = 3.0;
 
@@ -93,6 +96,7 @@ SemanticSlam::SemanticSlam(const LogHeader& header, SemanticSlamOptions options)
       gate_(options_.gateConfidence),
       unassigned_(header, options_.unassignedRate),
       lifecycle_(options_.provisional),
+      orientationUnobservable_(factory_.landmarksHavePose() && header.sensor.kind != SensorKind::RelativePose),
       smoother_(options_.smoother ? options_.smoother() : smootherFactory(SmootherKind::Incremental)()) {
   if (!(options_.nullWeight > 0.0 && options_.nullWeight < 1.0)) {
     throw std::invalid_argument("null-hypothesis weight must be in (0, 1)");
@@ -177,6 +181,7 @@ void SemanticSlam::addStep(const TimeStep& step) {
   std::vector<bool> warmStarted;             // whose first factor is the warm start's, to become the mixture
   FactorGraph weakPriors;                    // of the step's provisional landmarks (§5), after every record's
   std::vector<int> weakPriorLandmarks;
+  FactorGraph orientationPriors;             // of the step's new landmarks whose orientation is unobservable, last
   const std::size_t first = records_.size();
   for (std::size_t i = 0; i < step.detections.size(); ++i) {
     DetectionRecord record;
@@ -205,9 +210,14 @@ void SemanticSlam::addStep(const TimeStep& step) {
     if (known) {
       if (record.truth && *record.truth != kNotALandmark) {
         const auto found = landmarkOfTruthId_.find(*record.truth);
-        const int index = found != landmarkOfTruthId_.end()
-                              ? found->second
-                              : addLandmark(factory_.initialLandmark(record.measurement, robot), *record.truth, values);
+        int index = 0;
+        if (found != landmarkOfTruthId_.end()) {
+          index = found->second;
+        } else {
+          const Value initial = factory_.initialLandmark(record.measurement, robot);
+          index = addLandmark(initial, *record.truth, values);
+          if (orientationUnobservable_) orientationPriors.add(landmarkPrior(index, initial, kUnconstrainedSigma));
+        }
         record.knownLandmark = index;
         associations.add(factory_.detectionFactor(pose, landmarks_[index].key, record.measurement));
         landmarks_[index].classBelief.update(record.semanticLikelihoods);
@@ -224,9 +234,10 @@ void SemanticSlam::addStep(const TimeStep& step) {
         associations.add(factory_.detectionFactor(pose, landmarks_[index].key, record.measurement));
         landmarks_[index].classBelief.update(record.semanticLikelihoods);
         if (birthTime) {
-          weakPriors.add(weakPriorFactor(index, initial));
+          weakPriors.add(landmarkPrior(index, initial, std::max(unassigned_.maxRange(), 1e-3)));
           weakPriorLandmarks.push_back(index);
         }
+        if (orientationUnobservable_) orientationPriors.add(landmarkPrior(index, initial, kUnconstrainedSigma));
       } else {
         const std::vector<FactorPtr> factors = associationFactors(record);
         const bool warm = record.mixture && options_.warmStart &&
@@ -252,6 +263,7 @@ void SemanticSlam::addStep(const TimeStep& step) {
   }
   warmStarted.resize(records_.size() - first, false);
   for (const FactorPtr& prior : weakPriors) associations.add(prior);
+  for (const FactorPtr& prior : orientationPriors) associations.add(prior);
 
   // 4. Solve, and remember which smoother factors belong to which detection (they follow any propagation ones).
   const std::vector<FactorIndex> indices = smoother_->update(associations, values);
@@ -493,12 +505,11 @@ void SemanticSlam::applyEdits(std::vector<std::size_t> touched, std::vector<Fact
   for (std::size_t i = 0; i < indices.size(); ++i) records_[addedBy[i]].factors.push_back(indices[i]);
 }
 
-FactorPtr SemanticSlam::weakPriorFactor(int landmark, const Value& value) const {
+FactorPtr SemanticSlam::landmarkPrior(int landmark, const Value& value, double positionSigma) const {
   const int dimension = factory_.landmarkTangentDimension();
   const int position = factory_.dimension();  // the tangent's first entries: translation (MeasurementLog.h)
-  const double sigma = std::max(unassigned_.maxRange(), 1e-3);
   Vector variances = Vector::Constant(dimension, std::numbers::pi * std::numbers::pi);
-  variances.head(std::min(position, dimension)).setConstant(sigma * sigma);
+  variances.head(std::min(position, dimension)).setConstant(positionSigma * positionSigma);
   return factory_.landmarkPriorFactor(landmarks_[landmark].key,
                                       LandmarkPrior{-1, toLandmarkState(value), Matrix(variances.asDiagonal())});
 }
@@ -765,7 +776,7 @@ std::pair<std::optional<int>, double> SemanticSlam::chosenAssociation(const Dete
 RunResult SemanticSlam::result(bool withPoseCovariances) const {
   RunResult result;
   result.method = strategyName(options_.strategy);
-  if (options_.birth == BirthRule::Unassigned) result.method += "+unassigned";  // not the paper's birth rule
+  if (options_.birth == BirthRule::Threshold) result.method += "+threshold";  // paper B's own birth rule
   const Values& estimate = smoother_->estimate();
   for (Key pose : poseKeys_) {
     result.poses.push_back(toPose(estimate.value(pose)));

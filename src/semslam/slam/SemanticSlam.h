@@ -26,6 +26,8 @@
 //      same likelihood code with no state uncertainty) and M-steps (factors replaced, re-solve);
 //   5. class beliefs: each candidate's P(c | l) is updated with the detection's class likelihoods, tempered by its
 //      association weight (ClassBelief.h);
+//   (a posed landmark seen by a position-only sensor gets a prior of σ = π on its orientation, which nothing else
+//   observes, and an uninformative one on its position, so the system stays positive definite);
 //   6. with BirthRule::Unassigned, the landmarks' lifecycle (docs/association-front-end.md §5): a landmark born
 //      from an unassigned detection is provisional (a weak prior, σ = r_max per axis, keeps it well-posed whatever
 //      happens to its detections) until the M-of-N rule (LandmarkLifecycle.h) confirms it (its prior is removed),
@@ -71,7 +73,7 @@ std::string birthRuleName(BirthRule rule);
 
 struct SemanticSlamOptions {
   AssociationStrategy strategy = AssociationStrategy::MaxMixtureNullHypothesis;
-  BirthRule birth = BirthRule::Threshold;
+  BirthRule birth = BirthRule::Unassigned;  ///< the default since issue 10 (docs/association-front-end.md §9)
   double unassignedRate = UnassignedHypothesis::kDefaultRate;  ///< μ: unassigned detections expected per step
   double gateConfidence = AssociationGate::kDefaultConfidence;
   double nullWeight = 0.1;        ///< mm-nh: weight of the null hypothesis (B, sec. IV-C)
@@ -144,8 +146,10 @@ class SemanticSlam {
   /// A landmark at `value`: provisional (born at `birthTime`) or, without a birth time, confirmed.
   int addLandmark(const Value& value, std::optional<int> truthId, Values& values,
                   std::optional<double> birthTime = std::nullopt);
-  /// The weak prior of a provisional landmark at `value` (§5): σ = r_max per position axis, π per rotation axis.
-  FactorPtr weakPriorFactor(int landmark, const Value& value) const;
+  /// A prior at `value` with σ = positionSigma per position axis and π per rotation axis: a provisional
+  /// landmark's weak prior (§5: positionSigma = r_max), or, with kUnconstrainedSigma, the prior that holds the
+  /// orientation of a posed landmark seen by a position-only sensor (nothing else observes it).
+  FactorPtr landmarkPrior(int landmark, const Value& value, double positionSigma) const;
   /// Posterior of the best candidate against the others and (BirthRule::Unassigned) the unassigned hypothesis.
   static double bestPosterior(const DetectionRecord& record);
   /// p_geo(z | landmark) of step 2 at the current estimate: the detection's factor to `landmark` from the newest
@@ -194,6 +198,7 @@ class SemanticSlam {
   AssociationGate gate_;
   UnassignedHypothesis unassigned_;
   LandmarkLifecycle lifecycle_;
+  bool orientationUnobservable_;  // posed landmarks, position-only sensor: every new landmark gets an orientation prior
   std::unique_ptr<Smoother> smoother_;
   std::vector<Key> poseKeys_;
   std::vector<Landmark> landmarks_;
