@@ -97,6 +97,7 @@ SemanticSlam::SemanticSlam(const LogHeader& header, SemanticSlamOptions options)
       unassigned_(header, options_.unassignedRate),
       lifecycle_(options_.provisional),
       orientationUnobservable_(factory_.landmarksHavePose() && header.sensor.kind != SensorKind::RelativePose),
+      preselection_(header, gate_),
       smoother_(options_.smoother ? options_.smoother() : smootherFactory(SmootherKind::Incremental)()) {
   if (!(options_.nullWeight > 0.0 && options_.nullWeight < 1.0)) {
     throw std::invalid_argument("null-hypothesis weight must be in (0, 1)");
@@ -165,14 +166,25 @@ void SemanticSlam::addStep(const TimeStep& step) {
     newValues = Values();
   }
 
-  // 2. Candidates and weights, all against the marginal of the propagated estimate.
+  // 2. Candidates and weights, all against the marginal of the propagated estimate, over the landmarks that can
+  // pass the gate (docs/association-front-end.md, §7; every landmark without candidatePreselection). Landmarks
+  // created during this step are not among them.
   std::optional<JointMarginal> marginal;
+  std::vector<int> considered;
   if (!known && !landmarks_.empty() && !step.detections.empty()) {
-    std::vector<Key> keys = {pose};
-    for (int j = 0; j < landmarks(); ++j) {
-      if (lifecycle_.active(j)) keys.push_back(landmarks_[j].key);
+    const auto active = [this](int j) { return lifecycle_.active(j); };  // not dropped or merged (§5)
+    if (options_.candidatePreselection) {
+      considered = preselection_.select(*smoother_, pose, step.detections, options_.birth == BirthRule::Unassigned,
+                                        landmarks(), [this](int j) { return landmarks_[j].key; }, active);
+    } else {
+      for (int j = 0; j < landmarks(); ++j) {
+        if (active(j)) considered.push_back(j);
+      }
     }
+    std::vector<Key> keys = {pose};
+    for (int j : considered) keys.push_back(landmarks_[j].key);
     marginal = smoother_->jointMarginal(keys);
+    if (options_.candidatePreselection) preselection_.refresh(*marginal, considered);
   }
   FactorGraph associations = propagation;
   Values values = newValues;
@@ -198,7 +210,7 @@ void SemanticSlam::addStep(const TimeStep& step) {
     // then one joint assignment with the unassigned hypothesis.
     for (const Detection& detection : step.detections) unassigned_.observe(detection);
     for (std::size_t r = first; r < records_.size(); ++r) {
-      findCandidatesWithUnassigned(marginal ? &*marginal : nullptr, landmarksBeforeStep, records_[r]);
+      findCandidatesWithUnassigned(marginal ? &*marginal : nullptr, considered, records_[r]);
     }
     assignJointly(first);
   }
@@ -223,7 +235,7 @@ void SemanticSlam::addStep(const TimeStep& step) {
         landmarks_[index].classBelief.update(record.semanticLikelihoods);
       }
     } else {
-      if (!jointly && marginal) findCandidates(*marginal, landmarksBeforeStep, record);
+      if (!jointly && marginal) findCandidates(*marginal, considered, record);
       if (record.candidates.empty()) {
         // Under BirthRule::Unassigned the new landmark is provisional, held by a weak prior (§5).
         const std::optional<double> birthTime = jointly ? std::optional<double>(step.time) : std::nullopt;
@@ -299,10 +311,10 @@ LinearizedLikelihood SemanticSlam::geometricLikelihood(const JointMarginal& marg
   return linearizedLikelihood(factor, smoother_->estimate(), marginal.restrictedTo({pose, landmark.key}));
 }
 
-void SemanticSlam::findCandidates(const JointMarginal& marginal, int landmarkCount, DetectionRecord& record) const {
+void SemanticSlam::findCandidates(const JointMarginal& marginal, const std::vector<int>& considered,
+                                  DetectionRecord& record) const {
   std::vector<double> logWeights;
-  for (int j = 0; j < landmarkCount; ++j) {
-    if (!lifecycle_.active(j)) continue;
+  for (int j : considered) {
     const Landmark& landmark = landmarks_[j];
     const LinearizedLikelihood geometric = geometricLikelihood(marginal, landmark, record.measurement);
     if (!gate_.accepts(geometric)) continue;
@@ -314,7 +326,7 @@ void SemanticSlam::findCandidates(const JointMarginal& marginal, int landmarkCou
   if (!record.candidates.empty()) record.weights = normalizeLogWeights(logWeights);
 }
 
-void SemanticSlam::findCandidatesWithUnassigned(const JointMarginal* marginal, int landmarkCount,
+void SemanticSlam::findCandidatesWithUnassigned(const JointMarginal* marginal, const std::vector<int>& considered,
                                                 DetectionRecord& record) const {
   // P₀(s): the label's predictive under the uniform class prior (1 without semantics). A label that every class
   // rules out (all likelihoods 0, e.g. an exact model) carries no usable information: it counts as uninformative
@@ -323,8 +335,7 @@ void SemanticSlam::findCandidatesWithUnassigned(const JointMarginal* marginal, i
   if (!(labelPrior > 0.0) || !std::isfinite(labelPrior)) labelPrior = 1.0;
   record.unassignedLogLikelihood = unassigned_.logDensity(record.measurement) + std::log(labelPrior);  // (§1)
   if (!marginal) return;
-  for (int j = 0; j < landmarkCount; ++j) {
-    if (!lifecycle_.active(j)) continue;  // dropped or merged (§5)
+  for (int j : considered) {
     const Landmark& landmark = landmarks_[j];
     const double semantic = landmark.classBelief.predictive(record.semanticLikelihoods);
     if (!(semantic > 0.0)) continue;  // a label this landmark's class belief rules out

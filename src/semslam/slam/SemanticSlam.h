@@ -8,7 +8,9 @@
 //      the smoother re-solves, so the marginals below include x_k;
 //   2. candidates (B, sec. IV-B): for each detection z and landmark l, the linearised marginal likelihood
 //          p_geo(z | l) = N(z; h(x̄_k, l̄), H Σ_joint Hᵀ + R),  Σ_joint = Cov([x_k; l])  (MarginalLikelihood.h)
-//      and l is a candidate when its innovation chi2 passes the gate (AssociationGate.h). A candidate's weight is
+//      and l is a candidate when its innovation chi2 passes the gate (AssociationGate.h); only the landmarks that can
+//      pass are tested, found through a grid (CandidatePreselection.h, docs/association-front-end.md §7), and
+//      Σ_joint comes from one joint marginal over x_k and those landmarks. A candidate's weight is
 //          w_l ∝ p_geo(z | l) · Σ_c P(z_sem | c) P(c | l)            (ClassBelief.h)
 //      normalised over the candidates. No candidate: z starts a new landmark at its back-projection from x̄_k;
 //      with BirthRule::Unassigned (docs/association-front-end.md) the gate is the joint geometric × semantic one,
@@ -50,6 +52,7 @@
 #include <vector>
 
 #include "semslam/association/AssociationGate.h"
+#include "semslam/association/CandidatePreselection.h"
 #include "semslam/association/ClassBelief.h"
 #include "semslam/association/LandmarkLifecycle.h"
 #include "semslam/association/MeasurementFactory.h"
@@ -88,6 +91,7 @@ struct SemanticSlamOptions {
                                   ///< hypothesis) reaches this: an unambiguous one; 0: every detection
   LandmarkLifecycle::Rule provisional;  ///< BirthRule::Unassigned: the M-of-N rule of provisional landmarks
   SmootherFactory smoother;       ///< the back end; empty: the IncrementalSmoother
+  bool candidatePreselection = true;  ///< test only: false tests every landmark (docs/association-front-end.md §7)
 };
 
 /// What became of one detection.
@@ -156,13 +160,14 @@ class SemanticSlam {
   /// pose, linearised under the pair's block of `marginal` (MarginalLikelihood.h). Both birth rules use it.
   LinearizedLikelihood geometricLikelihood(const JointMarginal& marginal, const Landmark& landmark,
                                            const Detection& detection) const;
-  /// Candidates and their normalised weights for `detection` at the current estimate (step 2).
-  /// Landmarks created during this step are not candidates (the marginal predates them; a landmark produces at
-  /// most one detection per step).
-  void findCandidates(const JointMarginal& marginal, int landmarkCount, DetectionRecord& record) const;
+  /// Candidates among `considered` (ascending landmark indices, all in `marginal`) and their normalised weights for
+  /// `detection` at the current estimate (step 2). Landmarks created during this step are not considered (the
+  /// marginal predates them; a landmark produces at most one detection per step).
+  void findCandidates(const JointMarginal& marginal, const std::vector<int>& considered, DetectionRecord& record) const;
   /// BirthRule::Unassigned: candidates under the joint gate with their likelihoods and the unassigned hypothesis's
   /// (docs/association-front-end.md, §1-3).
-  void findCandidatesWithUnassigned(const JointMarginal* marginal, int landmarkCount, DetectionRecord& record) const;
+  void findCandidatesWithUnassigned(const JointMarginal* marginal, const std::vector<int>& considered,
+                                    DetectionRecord& record) const;
   /// BirthRule::Unassigned: the step's records (from `first`) assigned jointly, one detection per landmark (§4).
   void assignJointly(std::size_t first);
   /// The factors of one detection with candidates under the strategy (step 3).
@@ -199,6 +204,7 @@ class SemanticSlam {
   UnassignedHypothesis unassigned_;
   LandmarkLifecycle lifecycle_;
   bool orientationUnobservable_;  // posed landmarks, position-only sensor: every new landmark gets an orientation prior
+  CandidatePreselection preselection_;  // §7 of docs/association-front-end.md
   std::unique_ptr<Smoother> smoother_;
   std::vector<Key> poseKeys_;
   std::vector<Landmark> landmarks_;
