@@ -92,10 +92,13 @@ std::vector<int> CandidatePreselection::select(const Smoother& smoother, Key pos
   trackNew(smoother, landmarkCount, keyOf, active);
   synchronise(smoother.estimate());
   if (landmarkCount == 0 || detections.empty()) return {};
-  std::vector<int> everyLandmark;
-  for (int j = 0; j < landmarkCount; ++j) {
-    if (active(j)) everyLandmark.push_back(j);
-  }
+  const auto everyActiveLandmark = [&] {
+    std::vector<int> every;
+    for (int j = 0; j < landmarkCount; ++j) {
+      if (active(j)) every.push_back(j);
+    }
+    return every;
+  };
 
   const Value& poseValue = smoother.estimate().value(pose);
   const Matrix poseCovariance = smoother.marginalCovariance(pose);
@@ -108,7 +111,7 @@ std::vector<int> CandidatePreselection::select(const Smoother& smoother, Key pos
     const double threshold = gate_.threshold(m) + allowance;
     const std::optional<PreselectionBall> ball =
         preselectionBall(factory_, header_.sensor, poseValue, poseCovariance, detection, threshold);
-    if (!ball) return everyLandmark;  // §7: no finite ball holds every landmark that can pass
+    if (!ball) return everyActiveLandmark();  // §7: no finite ball holds every landmark that can pass
     for (int j : grid_.within(ball->center, ball->base, ball->slope)) {
       if (active(j)) selected.push_back(j);
     }
