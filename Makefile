@@ -5,7 +5,7 @@
 #   make test     build, then run every test through ctest
 #   make demo     build, then run paper B's mm-nh on the built-in ambiguous log and plot it
 #   make bench    build and run the benchmarks (installs libceres-dev for the Ceres comparison), then the
-#                 incremental replay benchmark
+#                 incremental replay benchmark and the candidate pre-selection benchmark
 #   make results  regenerate the measured results in docs/results.md
 
 BUILD_DIR ?= build
@@ -56,6 +56,7 @@ bench: deps-bench
 	cmake --build $(BUILD_DIR)-bench -j $(JOBS)
 	$(BUILD_DIR)-bench/bin/semslam_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 	$(BUILD_DIR)-bench/bin/semslam_incremental_bench
+	$(BUILD_DIR)-bench/bin/semslam_preselection_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 
 results: build
 	$(PYTHON) python/make_results.py --build $(BUILD_DIR)
