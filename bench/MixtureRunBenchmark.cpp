@@ -58,9 +58,10 @@ void mixtureRun(benchmark::State& state, BackEnd backEnd) {
 }  // namespace
 
 void registerMixtureRunBenchmarks() {
-  const std::pair<const char*, BackEnd> backEnds[] = {{"MixtureRun_incremental", BackEnd::Incremental},
-                                                       {"MixtureRun_incremental_switching", BackEnd::IncrementalSwitching},
-                                                       {"MixtureRun_batch", BackEnd::Batch}};
+  const std::pair<const char*, BackEnd> backEnds[] = {
+      {"MixtureRun_incremental", BackEnd::Incremental},
+      {"MixtureRun_incremental_switching", BackEnd::IncrementalSwitching},
+      {"MixtureRun_batch", BackEnd::Batch}};
   for (const auto& [name, backEnd] : backEnds) {
     benchmark::RegisterBenchmark(name, mixtureRun, backEnd)->Unit(benchmark::kMillisecond)->UseRealTime();
   }

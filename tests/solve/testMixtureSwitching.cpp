@@ -46,7 +46,8 @@ FactorPtr detectionMixture() {
 }
 
 FactorPtr fixOnX1() {
-  return std::make_shared<const PriorFactor<SE2>>(kX1, SE2(0.0, 2.0, 0.0), NoiseModel::fromSigmas(Vector3(0.1, 0.1, 0.01)));
+  return std::make_shared<const PriorFactor<SE2>>(kX1, SE2(0.0, 2.0, 0.0),
+                                                  NoiseModel::fromSigmas(Vector3(0.1, 0.1, 0.01)));
 }
 
 /// The map, x0 and the odometry to x1 (no detection yet).
@@ -213,7 +214,9 @@ TEST(MixtureSwitching, AMixtureHeavyRunFollowsTheBatchSmootherAndConvergesToItsE
            1.0});
     }
     step.add(std::make_shared<const MaxMixtureFactor>(std::move(components)));
-    if (k % 4 == 0) step.emplace<PriorFactor<SE2>>(poseKey(k), truth, NoiseModel::fromSigmas(Vector3(0.05, 0.05, 0.02)));
+    if (k % 4 == 0) {
+      step.emplace<PriorFactor<SE2>>(poseKey(k), truth, NoiseModel::fromSigmas(Vector3(0.05, 0.05, 0.02)));
+    }
     std::vector<FactorIndex> indices;
     for (Smoother* smoother : smoothers) {
       Values values;
