@@ -1,9 +1,11 @@
 // semslam_bench: our solvers and Ceres on the standard pose graphs, then the ratio table (RatioTable.h); one step
-// of the hybrid belief with each weight method (HybridStepBenchmark.h).
+// of the hybrid belief with each weight method (HybridStepBenchmark.h); a mixture-heavy mm-nh run on each back end
+// (MixtureRunBenchmark.h).
 //
 //   semslam_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true   (what `make bench` runs)
 //   semslam_bench --benchmark_filter=manhattan                                       (one dataset)
 //   semslam_bench --benchmark_filter=HybridStep                                      (the hybrid step)
+//   semslam_bench --benchmark_filter=MixtureRun                                      (mm-nh on both back ends)
 
 #include <benchmark/benchmark.h>
 
@@ -11,6 +13,7 @@
 
 #include "Datasets.h"
 #include "HybridStepBenchmark.h"
+#include "MixtureRunBenchmark.h"
 #include "RatioTable.h"
 #include "SemslamSolverBenchmarks.h"
 #ifdef SEMSLAM_BENCH_HAVE_CERES
@@ -28,6 +31,7 @@ int main(int argc, char** argv) {
 #endif
   }
   semslam::bench::registerHybridStepBenchmarks();
+  semslam::bench::registerMixtureRunBenchmarks();
 #ifndef SEMSLAM_BENCH_HAVE_CERES
   std::printf("semslam_bench was built without Ceres (find_package(Ceres) failed): our solvers only\n");
 #endif

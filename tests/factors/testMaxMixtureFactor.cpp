@@ -117,6 +117,16 @@ TEST(MaxMixtureFactor, NullHypothesisWinsForAnOutlierAndLosesForAnInlier) {
   EXPECT_EQ(mixtureFor(Vector2(7.0, 0.8)).activeComponent(values), 1);    // outlier: 30 sigma off in range
 }
 
+TEST(MaxMixtureFactor, ItsChoiceIsVisibleThroughTheFactorInterfaceAndOrdinaryFactorsHaveNone) {
+  // The smoothers re-choose components through Factor::activeComponent (docs/incremental-smoother.md, "Mixtures").
+  const Vector2 z(4.0, 0.0);
+  const FactorPtr mixture = std::make_shared<const MaxMixtureFactor>(
+      std::vector<MaxMixtureFactor::Component>{{rangeBearing(kNear, z), 0.5}, {rangeBearing(kFar, z), 0.5}});
+  EXPECT_EQ(mixture->activeComponent(twoLandmarks(0.0)), 0);
+  EXPECT_EQ(mixture->activeComponent(twoLandmarks(1.0)), 1);
+  EXPECT_EQ(rangeBearing(kNear, z)->activeComponent(twoLandmarks(0.0)), -1);
+}
+
 TEST(MaxMixtureFactor, RejectsBadComponents) {
   const Vector2 z(4.0, 0.0);
   EXPECT_THROW(MaxMixtureFactor({}), std::invalid_argument);

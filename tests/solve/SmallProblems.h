@@ -1,7 +1,9 @@
 #pragma once
-// Small seeded problems shared by the solver tests: a 2D trajectory with landmarks, and a linear point graph.
+// Small seeded problems shared by the solver tests: a 2D trajectory with landmarks, and a linear point graph; a
+// problem split into the steps an online front end would feed a smoother.
 
 #include <random>
+#include <set>
 
 #include "semslam/factors/BetweenFactor.h"
 #include "semslam/factors/PriorFactor.h"
@@ -48,6 +50,51 @@ inline Problem planarSlamProblem(int poses = 12, int landmarks = 5, unsigned see
     }
   }
   return problem;
+}
+
+/// A small problem fed pose by pose: pose i with every factor whose variables are poses ≤ i or landmarks, each
+/// landmark entering with its first factor.
+struct Steps {
+  std::vector<FactorGraph> factors;
+  std::vector<Values> values;
+};
+
+inline Steps splitByPose(const Problem& problem, int poses) {
+  Steps steps;
+  steps.factors.resize(poses);
+  steps.values.resize(poses);
+  std::set<Key> known;
+  for (const auto& factor : problem.graph) {
+    int step = 0;
+    for (Key key : factor->keys()) {
+      if (Symbol(key).tag() == 'x') step = std::max(step, static_cast<int>(Symbol(key).index()));
+    }
+    steps.factors[step].add(factor);
+  }
+  for (int i = 0; i < poses; ++i) {
+    for (const auto& factor : steps.factors[i]) {
+      for (Key key : factor->keys()) {
+        if (known.insert(key).second) steps.values[i].insert(key, problem.initial.value(key));
+      }
+    }
+  }
+  return steps;
+}
+
+/// Largest tangent difference between two estimates over the keys of `b` (local coordinates of a in b's frame).
+inline double maxDifference(const Values& a, const Values& b) {
+  double worst = 0.0;
+  for (const auto& [key, value] : b) {
+    const Value& other = a.value(key);
+    const Vector d = std::visit(
+        [&](const auto& vb) -> Vector {
+          using T = std::decay_t<decltype(vb)>;
+          return Manifold<T>::local(vb, std::get<T>(other));
+        },
+        value);
+    worst = std::max(worst, d.cwiseAbs().maxCoeff());
+  }
+  return worst;
 }
 
 }  // namespace semslam::test

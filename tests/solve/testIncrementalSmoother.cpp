@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <set>
 
 #include "SmallProblems.h"
 #include "semslam/io/PoseGraphFile.h"
@@ -21,51 +20,6 @@
 using namespace semslam;
 
 namespace {
-
-/// Largest tangent difference between two estimates over the keys of `b` (local coordinates of a in b's frame).
-double maxDifference(const Values& a, const Values& b) {
-  double worst = 0.0;
-  for (const auto& [key, value] : b) {
-    const Value& other = a.value(key);
-    const Vector d = std::visit(
-        [&](const auto& vb) -> Vector {
-          using T = std::decay_t<decltype(vb)>;
-          return Manifold<T>::local(vb, std::get<T>(other));
-        },
-        value);
-    worst = std::max(worst, d.cwiseAbs().maxCoeff());
-  }
-  return worst;
-}
-
-/// A small problem fed pose by pose: pose i with every factor whose variables are poses ≤ i or landmarks, each
-/// landmark entering with its first factor.
-struct Steps {
-  std::vector<FactorGraph> factors;
-  std::vector<Values> values;
-};
-
-Steps splitByPose(const test::Problem& problem, int poses) {
-  Steps steps;
-  steps.factors.resize(poses);
-  steps.values.resize(poses);
-  std::set<Key> known;
-  for (const auto& factor : problem.graph) {
-    int step = 0;
-    for (Key key : factor->keys()) {
-      if (Symbol(key).tag() == 'x') step = std::max(step, static_cast<int>(Symbol(key).index()));
-    }
-    steps.factors[step].add(factor);
-  }
-  for (int i = 0; i < poses; ++i) {
-    for (const auto& factor : steps.factors[i]) {
-      for (Key key : factor->keys()) {
-        if (known.insert(key).second) steps.values[i].insert(key, problem.initial.value(key));
-      }
-    }
-  }
-  return steps;
-}
 
 PoseGraphFile readFile(const std::filesystem::path& path, GraphFormat format) {
   return readPoseGraph(path.string(), format);
@@ -89,7 +43,7 @@ IncrementalSmootherParams exactParams() {
 
 TEST(IncrementalSmoother, EveryUpdateSolvesTheGaussNewtonSystemAtTheLinearizationPointExactly) {
   const test::Problem problem = test::planarSlamProblem(14, 5, 7);
-  const Steps steps = splitByPose(problem, 14);
+  const test::Steps steps = test::splitByPose(problem, 14);
   IncrementalSmoother smoother(exactParams());
   for (int i = 0; i < 14; ++i) {
     smoother.update(steps.factors[i], steps.values[i]);
@@ -101,27 +55,27 @@ TEST(IncrementalSmoother, EveryUpdateSolvesTheGaussNewtonSystemAtTheLinearizatio
     SparseCholesky cholesky;
     ASSERT_TRUE(cholesky.factorize(system.hessian()));
     const Values expected = system.retract(theta, cholesky.solve(Vector(-system.gradient())));
-    EXPECT_LT(maxDifference(smoother.estimate(), expected), 1e-9) << "after step " << i;
+    EXPECT_LT(test::maxDifference(smoother.estimate(), expected), 1e-9) << "after step " << i;
   }
   EXPECT_GT(smoother.cliqueCount(), 1u);
 }
 
 TEST(IncrementalSmoother, ConvergesToTheBatchOptimum) {
   const test::Problem problem = test::planarSlamProblem(20, 6, 11);
-  const Steps steps = splitByPose(problem, 20);
+  const test::Steps steps = test::splitByPose(problem, 20);
   IncrementalSmoother smoother;
   for (int i = 0; i < 20; ++i) smoother.update(steps.factors[i], steps.values[i]);
   const OptimizationResult converged = smoother.convergeAll();
   EXPECT_TRUE(converged.converged) << converged.stopReason;
   const OptimizationResult batch = optimize(problem.graph, problem.initial);
   EXPECT_NEAR(problem.graph.chi2(smoother.estimate()), batch.finalChi2, 1e-9 * batch.finalChi2);
-  EXPECT_LT(maxDifference(smoother.estimate(), batch.values), 1e-7);
-  EXPECT_LT(maxDifference(smoother.linearizationPoint(), batch.values), 1e-7);
+  EXPECT_LT(test::maxDifference(smoother.estimate(), batch.values), 1e-7);
+  EXPECT_LT(test::maxDifference(smoother.linearizationPoint(), batch.values), 1e-7);
 }
 
 TEST(IncrementalSmoother, RemovalAndReplacementMatchTheBatchSmoother) {
   const test::Problem problem = test::planarSlamProblem(12, 4, 5);
-  const Steps steps = splitByPose(problem, 12);
+  const test::Steps steps = test::splitByPose(problem, 12);
   IncrementalSmoother incremental(exactParams());
   BatchSmoother batch;
   std::vector<FactorIndex> indices;
@@ -156,12 +110,12 @@ TEST(IncrementalSmoother, RemovalAndReplacementMatchTheBatchSmoother) {
   ASSERT_TRUE(batch.lastResult().converged) << batch.lastResult().stopReason;
   EXPECT_NEAR(batch.factors().chi2(incremental.estimate()), batch.lastResult().finalChi2,
               1e-9 * batch.lastResult().finalChi2);
-  EXPECT_LT(maxDifference(incremental.estimate(), batch.estimate()), 1e-7);
+  EXPECT_LT(test::maxDifference(incremental.estimate(), batch.estimate()), 1e-7);
 }
 
 TEST(IncrementalSmoother, JointMarginalsEqualTheBatchOnesAtTheLinearizationPoint) {
   const test::Problem problem = test::planarSlamProblem(16, 5, 2);
-  const Steps steps = splitByPose(problem, 16);
+  const test::Steps steps = test::splitByPose(problem, 16);
   IncrementalSmoother smoother;
   for (int i = 0; i < 16; ++i) {
     smoother.update(steps.factors[i], steps.values[i]);
@@ -182,25 +136,25 @@ TEST(IncrementalSmoother, JointMarginalsEqualTheBatchOnesAtTheLinearizationPoint
 
 TEST(IncrementalSmoother, ForksAreIndependentAndShareFactors) {
   const test::Problem problem = test::planarSlamProblem(10, 3, 4);
-  const Steps steps = splitByPose(problem, 10);
+  const test::Steps steps = test::splitByPose(problem, 10);
   IncrementalSmoother smoother(exactParams());
   for (int i = 0; i < 8; ++i) smoother.update(steps.factors[i], steps.values[i]);
   const Values before = smoother.estimate();
   std::unique_ptr<Smoother> fork = smoother.fork();
   EXPECT_EQ(fork->factors()[0].get(), smoother.factors()[0].get());
   for (int i = 8; i < 10; ++i) fork->update(steps.factors[i], steps.values[i]);
-  EXPECT_EQ(maxDifference(smoother.estimate(), before), 0.0);
+  EXPECT_EQ(test::maxDifference(smoother.estimate(), before), 0.0);
   EXPECT_FALSE(smoother.estimate().exists(poseKey(9)));
   // The original continues on its own and reaches the fork's result.
   for (int i = 8; i < 10; ++i) smoother.update(steps.factors[i], steps.values[i]);
-  EXPECT_LT(maxDifference(smoother.estimate(), fork->estimate()), 1e-12);
+  EXPECT_LT(test::maxDifference(smoother.estimate(), fork->estimate()), 1e-12);
 }
 
 TEST(IncrementalSmoother, AForkSwitchingAFactorLeavesTheOriginalAndItsMarginalsUnchanged) {
   // The hybrid belief's use: fork, switch a factor in the fork (a max-mixture component, an EM weight), update it;
   // the original's estimate and marginals, computed from the conditionals both share, stay as they were.
   const test::Problem problem = test::planarSlamProblem(10, 3, 6);
-  const Steps steps = splitByPose(problem, 10);
+  const test::Steps steps = test::splitByPose(problem, 10);
   IncrementalSmoother smoother(exactParams());
   for (int i = 0; i < 10; ++i) smoother.update(steps.factors[i], steps.values[i]);
   const Values before = smoother.estimate();
@@ -216,8 +170,8 @@ TEST(IncrementalSmoother, AForkSwitchingAFactorLeavesTheOriginalAndItsMarginalsU
   fork->replaceFactor(odometry, std::make_shared<const BetweenFactor<SE2>>(
                                     poseKey(4), poseKey(5), original.measured(), NoiseModel::isotropic(3, 1.0)));
   fork->update();
-  EXPECT_GT(maxDifference(fork->estimate(), before), 1e-6);
-  EXPECT_EQ(maxDifference(smoother.estimate(), before), 0.0);
+  EXPECT_GT(test::maxDifference(fork->estimate(), before), 1e-6);
+  EXPECT_EQ(test::maxDifference(smoother.estimate(), before), 0.0);
   EXPECT_EQ((smoother.jointMarginal({poseKey(9), poseKey(4)}).covariance() - marginalBefore).norm(), 0.0);
   // The fork's marginals are those of its own graph.
   const Marginals batch(fork->factors(), static_cast<IncrementalSmoother&>(*fork).linearizationPoint());
@@ -228,7 +182,7 @@ TEST(IncrementalSmoother, AForkSwitchingAFactorLeavesTheOriginalAndItsMarginalsU
 
 TEST(IncrementalSmoother, NeedBasedReorderingKeepsTheSolutionExact) {
   const test::Problem problem = test::planarSlamProblem(24, 6, 9);
-  const Steps steps = splitByPose(problem, 24);
+  const test::Steps steps = test::splitByPose(problem, 24);
   IncrementalSmootherParams params = exactParams();
   params.reorderFillGrowth = 1.01;  // reorder at nearly every update
   IncrementalSmoother reordering(params);
@@ -238,14 +192,14 @@ TEST(IncrementalSmoother, NeedBasedReorderingKeepsTheSolutionExact) {
     reordering.update(steps.factors[i], steps.values[i]);
     plain.update(steps.factors[i], steps.values[i]);
     reordered = reordered || reordering.lastUpdate().fullReordering;
-    EXPECT_LT(maxDifference(reordering.estimate(), plain.estimate()), 1e-8) << "step " << i;
+    EXPECT_LT(test::maxDifference(reordering.estimate(), plain.estimate()), 1e-8) << "step " << i;
   }
   EXPECT_TRUE(reordered);
 }
 
 TEST(IncrementalSmoother, RejectsInvalidUpdatesAndStaysUsable) {
   const test::Problem problem = test::planarSlamProblem(6, 2, 1);
-  const Steps steps = splitByPose(problem, 6);
+  const test::Steps steps = test::splitByPose(problem, 6);
   IncrementalSmoother smoother;
   smoother.update(steps.factors[0], steps.values[0]);
   EXPECT_THROW(smoother.update({}, steps.values[0]), std::invalid_argument);  // key exists
@@ -255,7 +209,7 @@ TEST(IncrementalSmoother, RejectsInvalidUpdatesAndStaysUsable) {
   for (int i = 1; i < 6; ++i) smoother.update(steps.factors[i], steps.values[i]);
   smoother.convergeAll();
   const OptimizationResult batch = optimize(problem.graph, problem.initial);
-  EXPECT_LT(maxDifference(smoother.estimate(), batch.values), 1e-7);
+  EXPECT_LT(test::maxDifference(smoother.estimate(), batch.values), 1e-7);
 }
 
 TEST(IncrementalSmoother, AnUnconstrainedVariableIsReported) {
@@ -299,14 +253,14 @@ TEST_P(IncrementalReplay, IntermediateEstimatesAndTheFinalOptimumMatchBatch) {
     // chi2 barely above it (measured: at most 2e-3 relative); converged, it is the batch optimum itself.
     const FactorGraph graph = smoother.factors();
     const OptimizationResult batch = optimize(graph, smoother.estimate());
-    EXPECT_LT(maxDifference(smoother.estimate(), batch.values), IncrementalSmootherParams().relinearizeThreshold)
+    EXPECT_LT(test::maxDifference(smoother.estimate(), batch.values), IncrementalSmootherParams().relinearizeThreshold)
         << "step " << checkpoint;
     EXPECT_LE(graph.chi2(smoother.estimate()), (1.0 + 5e-3) * batch.finalChi2 + 1e-9) << "step " << checkpoint;
     auto converged = smoother.fork();
     static_cast<IncrementalSmoother&>(*converged).convergeAll();
     EXPECT_NEAR(graph.chi2(converged->estimate()), batch.finalChi2, 1e-6 * batch.finalChi2 + 1e-9)
         << "step " << checkpoint;
-    EXPECT_LT(maxDifference(converged->estimate(), batch.values), 1e-5) << "step " << checkpoint;
+    EXPECT_LT(test::maxDifference(converged->estimate(), batch.values), 1e-5) << "step " << checkpoint;
     // Marginals of the newest poses equal the batch ones at the same linearization point.
     const Key newest = steps.step(checkpoint - 1, smoother.estimate()).pose;
     const Key older = steps.step(checkpoint - 2, smoother.estimate()).pose;

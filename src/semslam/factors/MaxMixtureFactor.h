@@ -40,8 +40,8 @@ class MaxMixtureFactor final : public Factor {
   const std::vector<Component>& components() const { return components_; }
   int errorDimension() const override { return maxComponentDimension_ + 1; }
 
-  /// The index of the component the mixture uses at `values` (the argmin above).
-  int activeComponent(const Values& values) const;
+  /// The index of the component the mixture uses at `values` (the argmin above; Factor::activeComponent).
+  int activeComponent(const Values& values) const override;
 
   void linearize(const Values& values, LinearizedFactor& out) const override;
   double chi2(const Values& values) const override;

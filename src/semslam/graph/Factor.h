@@ -49,6 +49,11 @@ class Factor {
   /// density (robust kernels, mixtures) return std::nullopt; marginal likelihoods and mixture weights need it.
   virtual std::optional<double> logNormalizer() const { return std::nullopt; }
 
+  /// For a factor with a discrete choice (a max-mixture, factors/MaxMixtureFactor.h): the index of the component
+  /// linearize() would use at `values`. −1 for a factor without one. The smoothers use it to re-choose components
+  /// at a new estimate (docs/incremental-smoother.md, "Mixtures").
+  virtual int activeComponent(const Values& /*values*/) const { return -1; }
+
  private:
   std::vector<Key> keys_;
 };

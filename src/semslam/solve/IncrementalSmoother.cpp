@@ -149,19 +149,13 @@ std::vector<FactorIndex> IncrementalSmoother::update(const FactorGraph& newFacto
   lastUpdate_ = UpdateStatistics();
   for (const auto& [key, value] : newValues) addVariable(key, value);
 
-  std::vector<int> marked;
-  std::vector<bool> isMarked(variables_.size(), false);
-  const auto mark = [&](int v) {
-    if (!isMarked[v]) {
-      isMarked[v] = true;
-      marked.push_back(v);
-    }
-  };
-  for (int v : pendingMarked_) mark(v);
+  MarkedVariables marked;
+  marked.isMarked.assign(variables_.size(), 0);
+  for (int v : pendingMarked_) marked.mark(v);
   pendingMarked_.clear();
   for (FactorIndex index : removed) {
     Slot& slot = slots_[index];
-    for (int v : slot.variables) mark(v);
+    for (int v : slot.variables) marked.mark(v);
     detach(static_cast<int>(index));
     slot = Slot();
   }
@@ -176,7 +170,7 @@ std::vector<FactorIndex> IncrementalSmoother::update(const FactorGraph& newFacto
     slots_.push_back(std::move(slot));
     attach(index);
     for (int v : slots_[index].variables) {
-      mark(v);
+      marked.mark(v);
       constrainedLast[v] = true;
     }
   }
@@ -198,16 +192,18 @@ std::vector<FactorIndex> IncrementalSmoother::update(const FactorGraph& newFacto
     for (int v : candidates) {
       if (variables_[v].clique < 0) continue;
       const double norm = deltaNorm(v);
-      if (forceFull_ ? norm > 0.0 : norm > params_.relinearizeThreshold) {
-        relinearize(v);
-        ++lastUpdate_.relinearizedVariables;
-        for (int slot : variables_[v].factors) {
-          for (int u : slots_[slot].variables) mark(u);
-        }
-      }
+      if (forceFull_ ? norm > 0.0 : norm > params_.relinearizeThreshold) relinearizeAndMark(v, marked);
     }
   }
   ++updates_;
+
+  // Mixtures entering the graph choose at the estimate (class comment, step 0).
+  std::vector<int> entering;
+  entering.swap(pendingReplaced_);
+  if (params_.maxSwitchRounds > 0 && !forceFull_) {
+    entering.insert(entering.end(), indices.begin(), indices.end());
+    relinearizeMixtures(switchedMixtures(entering, true), marked);
+  }
 
   // Need-based reordering, or convergeAll(): the whole tree.
   const std::size_t treeVariables = variables_.size();
@@ -217,25 +213,37 @@ std::vector<FactorIndex> IncrementalSmoother::update(const FactorGraph& newFacto
   const bool full = forceFull_ || fillGrew;
   if (full) {
     for (int v = 0; v < static_cast<int>(variables_.size()); ++v) {
-      if (!variables_[v].factors.empty() || variables_[v].clique >= 0) mark(v);
+      if (!variables_[v].factors.empty() || variables_[v].clique >= 0) marked.mark(v);
     }
     if (forceFull_) std::fill(constrainedLast.begin(), constrainedLast.end(), false);
   }
   lastUpdate_.fullReordering = full;
 
-  const std::vector<int> newCliques = reeliminate(marked, constrainedLast);
+  scratch_.linearizedMixtures.clear();
+  scratch_.changedVariables.clear();
+  const std::vector<int> newCliques = reeliminate(marked.list, constrainedLast);
   if (full || entriesPerVariableAtReorder_ == 0.0) {
     entriesPerVariableAtReorder_ = static_cast<double>(factorEntries_) / static_cast<double>(treeVariables);
   }
-  backSubstitute(newCliques, forceFull_ ? 0.0 : params_.wildfireThreshold);
+  const double wildfireThreshold = forceFull_ ? 0.0 : params_.wildfireThreshold;
+  backSubstitute(newCliques, wildfireThreshold);
+  if (params_.maxSwitchRounds > 0) settleMixtures(constrainedLast, wildfireThreshold);
   return indices;
+}
+
+void IncrementalSmoother::relinearizeAndMark(int variable, MarkedVariables& marked) {
+  relinearize(variable);
+  ++lastUpdate_.relinearizedVariables;
+  for (int slot : variables_[variable].factors) {
+    for (int u : slots_[slot].variables) marked.mark(u);
+  }
 }
 
 std::vector<int> IncrementalSmoother::reeliminate(const std::vector<int>& marked,
                                                   const std::vector<bool>& constrainedLast) {
   ReeliminatedPart part = detachTop(marked);
   const std::vector<int>& eliminated = part.variables;
-  lastUpdate_.reeliminatedVariables = static_cast<int>(eliminated.size());
+  lastUpdate_.reeliminatedVariables += static_cast<int>(eliminated.size());
   const int m = static_cast<int>(eliminated.size());
   if (m == 0) {
     if (!part.orphans.empty()) throw std::logic_error("IncrementalSmoother: orphans without a re-eliminated parent");
@@ -343,6 +351,10 @@ void IncrementalSmoother::linearizeStale(const std::vector<int>& slots) {
       contribution->information.noalias() = J.transpose() * J;
       contribution->vector.noalias() = -(J.transpose() * lin.whitenedError);
       s.linearization = std::move(contribution);
+      if (params_.maxSwitchRounds > 0) {  // the mixtures' rule only (class comment); off, nothing is recorded
+        s.component = s.factor->activeComponent(theta_);
+        if (s.component >= 0) scratch_.linearizedMixtures.push_back(slot);
+      }
     }
   }
 }
@@ -390,7 +402,7 @@ std::vector<int> IncrementalSmoother::buildCliques(const ReeliminatedPart& part,
   SymbolicElimination& symbolic = scratch_.symbolic;
   symbolic.eliminate(later, params_.relaxedCliqueFrontals, params_.relaxedCliqueZeros);
   const int newCount = symbolic.cliqueCount();
-  lastUpdate_.reeliminatedCliques = newCount;
+  lastUpdate_.reeliminatedCliques += newCount;
   std::vector<int> cliqueIds(newCount);
   for (int i = 0; i < newCount; ++i) cliqueIds[i] = allocateClique();
   const auto globalOfRank = [&](int r) { return part.variables[order[r]]; };
@@ -526,6 +538,7 @@ void IncrementalSmoother::backSubstitute(const std::vector<int>& newCliques, dou
       if (change > 0.0) {
         delta = updated;
         markStale(v);
+        scratch_.changedVariables.push_back(v);
         if (!isCandidate_[v]) {
           isCandidate_[v] = 1;
           relinearizationCandidates_.push_back(v);
@@ -565,6 +578,7 @@ void IncrementalSmoother::replaceFactor(FactorIndex index, FactorPtr factor) {
   Slot& slot = slots_[index];
   pendingMarked_.insert(pendingMarked_.end(), slot.variables.begin(), slot.variables.end());
   pendingMarked_.insert(pendingMarked_.end(), variables.begin(), variables.end());
+  pendingReplaced_.push_back(static_cast<int>(index));
   detach(static_cast<int>(index));
   slot.factor = std::move(factor);
   slot.variables = std::move(variables);

@@ -31,6 +31,25 @@
 // Need-based reordering: when the factor's entries per variable grow past reorderFillGrowth times their value
 // after the last full ordering, an update re-orders and re-eliminates the whole tree (linearizations are reused).
 //
+// Mixtures (factors with a discrete choice, Factor::activeComponent ≥ 0: paper B's max-mixtures, sec. IV-C). A
+// mixture is linearized with the component c_f(θ) active at θ, so one Gauss-Newton step at θ cannot take it to
+// another component's basin. Each update therefore re-chooses, as the batch smoother does at every Gauss-Newton
+// iterate (docs/incremental-smoother.md, "Mixtures"; docs/association-front-end.md §6):
+//   0. before the solve, a mixture entering the graph (new, or replacing a factor) with c_f(θ) ≠ c_f(θ ⊕ Δ) has
+//      its variables relinearized at the estimate (θ_v ← θ_v ⊕ Δ_v, Δ_v ← 0, fluid: every factor touching them
+//      re-linearized and re-eliminated): it chooses where the batch smoother's first iterate would;
+//   1. after the solve, every mixture the update touched (linearized in it, or one of whose variables' Δ changed)
+//      is checked: if its linearized component differs from c_f(θ ⊕ Δ) at the new estimate, its variables are
+//      relinearized there and steps 2–5 run again on what that marks;
+//   2. repeat 1 until no touched mixture switches, at most maxSwitchRounds extra solves
+//      (IncrementalSmootherParams.h). Mixtures still switching then are checked first at the next update.
+// Opt-in: maxSwitchRounds is 0 by default (steps 0–2 skipped), for the measured reasons in its comment.
+// Invariant after an update (unless the round limit stopped it): every mixture's linearized component is the one
+// active at the estimate, c_f(θ) = c_f(θ ⊕ Δ), and the estimate is the exact Gauss-Newton step at θ with those
+// components: a fixed point of "choose at the estimate, solve", which is what a converged batch solve also
+// satisfies. Mixtures the update did not touch have unchanged θ ⊕ Δ and keep the invariant. A graph without
+// mixtures does exactly the work, and gets exactly the numbers, it did without this rule.
+//
 // Exactness: with wildfireThreshold = 0 every update's Δ solves the Gauss-Newton system at θ exactly (the tree is
 // the Cholesky factor of A under its ordering); with the default, the cliques below separators that moved less
 // than the threshold keep their previous Δ. An intermediate estimate is thus one Gauss-Newton step from θ, which
@@ -72,6 +91,8 @@ class IncrementalSmoother final : public Smoother {
     int reeliminatedCliques = 0;
     int solvedCliques = 0;
     bool fullReordering = false;
+    int componentSwitches = 0;  // mixtures relinearized because their active component changed (steps 0–1)
+    int switchRounds = 0;       // extra solves for them (≤ maxSwitchRounds)
   };
 
   explicit IncrementalSmoother(IncrementalSmootherParams params = {});
@@ -123,6 +144,7 @@ class IncrementalSmoother final : public Smoother {
     FactorPtr factor;  // null once removed
     std::vector<int> variables;
     std::shared_ptr<const FactorContribution> linearization;  // at θ; null when stale
+    int component = -1;  // Factor::activeComponent at θ when linearized (rule on): −1 for none
   };
   struct Clique {
     std::vector<int> frontals;   // in elimination order
@@ -137,6 +159,32 @@ class IncrementalSmoother final : public Smoother {
   void attach(int slot);
   void detach(int slot);
   void relinearize(int variable);
+  /// The variables an update re-eliminates, each once, in order of marking.
+  struct MarkedVariables {
+    std::vector<int> list;
+    std::vector<char> isMarked;
+    void mark(int v) {
+      if (!isMarked[v]) {
+        isMarked[v] = 1;
+        list.push_back(v);
+      }
+    }
+  };
+  /// Fluid relinearization of one variable: relinearize(v), then mark every variable of every factor touching it.
+  void relinearizeAndMark(int variable, MarkedVariables& marked);
+  // Mixtures (class comment, steps 0–2; IncrementalSmootherMixtures.cpp).
+  /// The mixtures among `slots` whose linearized component (or, when `atTheta`, the one active at θ) differs from
+  /// the one active at the estimate θ ⊕ Δ.
+  std::vector<int> switchedMixtures(const std::vector<int>& slots, bool atTheta);
+  /// Relinearizes at the estimate every variable of each of `mixtures` whose Δ is not zero, marking as fluid
+  /// relinearization does.
+  void relinearizeMixtures(const std::vector<int>& mixtures, MarkedVariables& marked);
+  /// The mixtures the last solve touched: linearized in it (scratch_.linearizedMixtures), touching a variable whose
+  /// Δ it changed (scratch_.changedVariables), or left unsettled by the previous update.
+  std::vector<int> touchedMixtures();
+  /// Steps 1–2: check, relinearize, re-solve (back-substituting with `wildfireThreshold`) until settled or
+  /// maxSwitchRounds.
+  void settleMixtures(const std::vector<bool>& constrainedLast, double wildfireThreshold);
   /// The part of the tree being re-eliminated: its variables (local index i ↔ variables[i]) and the orphans, the
   /// subtrees left below it with their cached marginals.
   struct ReeliminatedPart {
@@ -173,6 +221,8 @@ class IncrementalSmoother final : public Smoother {
   std::vector<double> delta_;
   std::vector<Slot> slots_;
   std::vector<int> pendingMarked_;  // variables of factors replaced since the last update
+  std::vector<int> pendingReplaced_;  // slots replaced since the last update (mixtures among them: step 0)
+  std::vector<int> unsettledMixtures_;  // mixtures still switching when the last update hit maxSwitchRounds
   std::vector<Clique> cliques_;
   std::vector<int> freeCliques_;
   std::vector<int> roots_;
@@ -201,6 +251,8 @@ class IncrementalSmoother final : public Smoother {
     int stamp = 0;
     LinearizedFactor linearized;
     std::vector<double> solveBuffer;  // one clique's frontal and separator Δ in back-substitution
+    std::vector<int> changedVariables;    // variables whose Δ the last back-substitution changed
+    std::vector<int> linearizedMixtures;  // mixture slots linearized by the last re-elimination
   };
   Scratch scratch_;
 

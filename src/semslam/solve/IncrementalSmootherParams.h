@@ -21,6 +21,18 @@
 //   reorderFillGrowth     need-based reordering: when the factor holds more than this many times the entries per
 //                         variable it held right after the last full ordering, the next update re-orders and
 //                         re-eliminates the whole tree (with cached linearizations); 0 never does.
+//   maxSwitchRounds       mixtures (factors with Factor::activeComponent ≥ 0, e.g. paper B's max-mixtures): after
+//                         an update's solve, a mixture whose component active at the new estimate θ ⊕ Δ differs
+//                         from the one it was linearized with has its variables relinearized there and the update
+//                         solves again, until no mixture switches or this many extra solves were made (the
+//                         incremental counterpart of the batch smoother choosing at every Gauss-Newton iterate;
+//                         IncrementalSmoother.h, docs/incremental-smoother.md "Mixtures"). 0, the default, turns
+//                         re-choosing off (components chosen at θ only, the behaviour before issue 10 §6): measured
+//                         on the logs of docs/association-front-end.md §6, 5 rounds do not bring the incremental
+//                         ATE to the batch back end's, make mm much worse (KITTI 00: 39 m → 186 m; MRCLAM robot 1:
+//                         0.24 → 0.61 m) and cost up to 19× more CPU (Lost in the Woods mm-nh), so it stays opt-in
+//                         until a switch is accepted only when it lowers the cost, as a batch Gauss-Newton step is.
+//                         A graph without mixtures is solved bit for bit the same whatever the value.
 
 namespace semslam {
 
@@ -31,6 +43,7 @@ struct IncrementalSmootherParams {
   double reorderFillGrowth = 2.0;
   int relaxedCliqueFrontals = 4;
   double relaxedCliqueZeros = 0.5;
+  int maxSwitchRounds = 0;
 };
 
 }  // namespace semslam
