@@ -40,7 +40,7 @@ RUNS = [
     ("gpda", "gpda", ["--birth", "unassigned"]),
     ("mm", "mm", ["--birth", "unassigned"]),
     ("mm-nh", "mm-nh", ["--birth", "unassigned"]),
-    ("mm-nh, threshold birth (paper B)", "mm-nh", []),
+    ("mm-nh, threshold birth (paper B)", "mm-nh", ["--birth", "threshold"]),
     ("mm-nh ceiling (known-DA poses)", "mm-nh", ["--birth", "unassigned", "--on-known-trajectory"]),
 ]
 VARIANTS = [
@@ -91,7 +91,7 @@ def association_section(semslam, data, scratch, shown):
                                      "--keyframe-period", "1"] + convert_args))
     lines += ["```sh"] + commands_shown + [
         "build/bin/semslam run --method M --in rN.jsonl --out DIR --no-covariances --birth unassigned",
-        "build/bin/semslam run --method mm-nh --in rN.jsonl --out DIR --no-covariances            # threshold birth",
+        "build/bin/semslam run --method mm-nh --in rN.jsonl --out DIR --no-covariances --birth threshold",
         "build/bin/semslam run --method mm-nh --in rN.jsonl --out DIR --no-covariances --birth unassigned "
         "--on-known-trajectory",
         "```", ""]

@@ -15,7 +15,9 @@
 //      normalised over the candidates. No candidate: z starts a new landmark at its back-projection from x̄_k;
 //      with BirthRule::Unassigned (docs/association-front-end.md) the gate is the joint geometric × semantic one,
 //      every detection also has the unassigned hypothesis (UnassignedHypothesis.h), and the step's detections are
-//      assigned jointly, at most one per landmark (Hungarian); an unassigned detection starts a new landmark;
+//      assigned jointly, at most one per landmark (Hungarian); an unassigned detection starts a new landmark
+//      (a posed landmark seen by a position-only sensor also gets a prior of σ = π on its orientation, which
+//      nothing else observes, and an uninformative one on its position, so the system stays positive definite);
 //   3. the strategy's factors (AssociationStrategy.h): mm builds a MaxMixtureFactor with components w_l; mm-nh adds
 //      the null hypothesis, the detection's factor to the most likely candidate (with BirthRule::Unassigned: the
 //      jointly assigned landmark, which the warm start below uses too) with standard deviations scaled by
@@ -23,13 +25,13 @@
 //      candidate whose information is scaled by w_l;
 //   4. the smoother re-solves (mm, mm-nh with warmStart: first with each detection's most likely candidate, then
 //      again with the mixtures, so that they choose their components near the step's solution rather than at the
-//      odometry prediction, where the null hypothesis would win every detection once the odometry is poor); gpda runs emIterations E-steps over the detections of the last emWindow steps
+//      odometry prediction, where the null hypothesis would win every detection once the odometry is poor; only
+//      for a detection whose best candidate is unambiguous, warmStartMinimumPosterior); gpda runs emIterations
+//      E-steps over the detections of the last emWindow steps
 //      (weights recomputed at the current estimate, Σ_joint = 0, i.e. N(z; h(X̂), R) times the semantic term, the
 //      same likelihood code with no state uncertainty) and M-steps (factors replaced, re-solve);
 //   5. class beliefs: each candidate's P(c | l) is updated with the detection's class likelihoods, tempered by its
 //      association weight (ClassBelief.h);
-//   (a posed landmark seen by a position-only sensor gets a prior of σ = π on its orientation, which nothing else
-//   observes, and an uninformative one on its position, so the system stays positive definite);
 //   6. with BirthRule::Unassigned, the landmarks' lifecycle (docs/association-front-end.md §5): a landmark born
 //      from an unassigned detection is provisional (a weak prior, σ = r_max per axis, keeps it well-posed whatever
 //      happens to its detections) until the M-of-N rule (LandmarkLifecycle.h) confirms it (its prior is removed),
@@ -66,8 +68,9 @@ namespace semslam {
 /// How a detection that matches no mapped landmark starts one (docs/association-front-end.md).
 enum class BirthRule {
   Threshold,   ///< paper B: a landmark starts when no landmark passes the geometric gate
-  Unassigned,  ///< every detection also has the unassigned hypothesis (UnassignedHypothesis.h); the step's
-               ///< detections are assigned jointly, one per landmark (Hungarian), under the joint gate
+  Unassigned,  ///< the default: every detection also has the unassigned hypothesis (UnassignedHypothesis.h); the
+               ///< step's detections are assigned jointly, one per landmark (Hungarian), under the joint gate;
+               ///< new landmarks are provisional (LandmarkLifecycle.h)
 };
 
 /// "threshold" | "unassigned"; anything else throws std::invalid_argument.
