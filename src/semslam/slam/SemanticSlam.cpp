@@ -629,7 +629,11 @@ void SemanticSlam::mergeProvisionalLandmarks(std::vector<std::size_t>& touched, 
   }
   if (provisional.empty()) return;
   const double range = unassigned_.maxRange();
-  auto position = [&](int j) { return MeasurementFactory::positionOf(estimate.value(landmarks_[j].key)); };
+  std::vector<Vector> positions(static_cast<std::size_t>(landmarks()));  // of the active landmarks, read once
+  for (int j = 0; j < landmarks(); ++j) {
+    if (lifecycle_.active(j)) positions[j] = MeasurementFactory::positionOf(estimate.value(landmarks_[j].key));
+  }
+  auto position = [&](int j) -> const Vector& { return positions[static_cast<std::size_t>(j)]; };
   for (int j = 0; j < landmarks(); ++j) {
     if (!lifecycle_.active(j) || lifecycle_.provisional(j)) continue;
     for (int p : provisional) {
@@ -639,6 +643,7 @@ void SemanticSlam::mergeProvisionalLandmarks(std::vector<std::size_t>& touched, 
       }
     }
   }
+  if (nearby.empty() && provisional.size() < 2) return;  // nothing to merge into: no marginal to take
   std::vector<Key> keys;
   for (int j : provisional) keys.push_back(landmarks_[j].key);
   for (int j : nearby) keys.push_back(landmarks_[j].key);

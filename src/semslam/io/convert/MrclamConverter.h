@@ -43,8 +43,8 @@ namespace semslam {
 /// 95 % quantile of |residual − median| over all landmark detections of Dataset 6's five robots against the Vicon
 /// truth (15,383 residuals: 0.406 m and 0.0268 rad) divided by 1.96, i.e. 0.207 m and 0.0137 rad, rounded up. The
 /// robust standard deviations (1.4826 · MAD: 0.131 m, 0.0083 rad) describe only the core of these heavy-tailed
-/// residuals; stated as σ they left 22 % of robot 1's true detections beyond χ²₂(0.99) and 4 % outside the
-/// association gate, which split and merged landmarks even on the true trajectory (docs/association-front-end.md).
+/// residuals; stated as σ they made true landmarks lose to the unassigned hypothesis, which split and merged
+/// landmarks even on the true trajectory (docs/association-front-end.md §9).
 inline constexpr double kMrclamRangeSigma = 0.21;     // metres
 inline constexpr double kMrclamBearingSigma = 0.014;  // radians
 /// Odometry input noise intensities (variance per second): the variance, over one second, of the commanded
