@@ -74,7 +74,20 @@ TEST(LandmarkLifecycle, MergesFollowChains) {
   EXPECT_EQ(lifecycle.mergedInto(b), mapped);
   EXPECT_EQ(lifecycle.mergedInto(a), mapped);
   EXPECT_EQ(lifecycle.mergedInto(mapped), std::nullopt);
-  EXPECT_THROW(lifecycle.merge(mapped, a), std::logic_error);  // a confirmed landmark does not merge
+  EXPECT_THROW(lifecycle.merge(mapped, a), std::logic_error);  // into a merged landmark
+  EXPECT_THROW(lifecycle.merge(a, mapped), std::logic_error);  // a merged landmark again
+  EXPECT_THROW(lifecycle.merge(mapped, mapped), std::logic_error);
+}
+
+TEST(LandmarkLifecycle, AConfirmedDuplicateMergesIntoAnotherConfirmedLandmark) {
+  LandmarkLifecycle lifecycle = withUnitSteps({}, 2);
+  const int older = lifecycle.addConfirmed();
+  const int newer = lifecycle.addConfirmed();
+  lifecycle.merge(newer, older);
+  EXPECT_EQ(lifecycle.state(newer), State::Merged);
+  EXPECT_FALSE(lifecycle.active(newer));
+  EXPECT_EQ(lifecycle.mergedInto(newer), older);
+  EXPECT_FALSE(lifecycle.observe(newer, 10.0));  // a merged landmark counts nothing
 }
 
 TEST(LandmarkLifecycle, OneConfirmationMeansEveryBirthIsConfirmed) {

@@ -84,8 +84,10 @@ bool LandmarkLifecycle::passedInField(int landmark) {
 void LandmarkLifecycle::drop(int landmark) { provisionalEntry(landmark).state = State::Dropped; }
 
 void LandmarkLifecycle::merge(int landmark, int into) {
-  if (landmark == into || !active(into)) throw std::logic_error("merge into an inactive landmark or itself");
-  Entry& entry = provisionalEntry(landmark);
+  if (landmark == into || !active(into) || !active(landmark)) {
+    throw std::logic_error("merge of an inactive landmark, into an inactive landmark or into itself");
+  }
+  Entry& entry = landmarks_.at(static_cast<std::size_t>(landmark));
   entry.state = State::Merged;
   entry.mergedInto = into;
 }

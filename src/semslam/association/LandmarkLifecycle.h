@@ -14,9 +14,12 @@
 //   dropped    once it has been inside the sensor's field on N = `patience` steps after its birth without being
 //              confirmed (it should have been seen again);
 //   merged     into another landmark, when the caller's test (§5) says the two are one.
+// A confirmed landmark can still be merged into another (a duplicate: the same object mapped twice, e.g. once
+// before and once after a stretch of drift, §5c), when the caller's test says the two are one.
 //
 // Invariants: indices are dense and 0-based, in the order of add*(); states move only Provisional → Confirmed,
-// Provisional → Dropped, Provisional → Merged; every counter refers to steps after the landmark's birth.
+// Provisional → Dropped, Provisional → Merged, Confirmed → Merged; every counter refers to steps after the
+// landmark's birth.
 
 #include <optional>
 #include <vector>
@@ -64,6 +67,7 @@ class LandmarkLifecycle {
   bool passedInField(int landmark);
 
   void drop(int landmark);
+  /// A provisional or confirmed `landmark` into another active one.
   void merge(int landmark, int into);
 
  private:

@@ -497,7 +497,8 @@ std::vector<FactorPtr> SemanticSlam::recordFactors(DetectionRecord& record) cons
   return associationFactors(record);
 }
 
-void SemanticSlam::applyEdits(std::vector<std::size_t> touched, std::vector<FactorIndex> removed) {
+void SemanticSlam::applyEdits(std::vector<std::size_t> touched, std::vector<FactorIndex> removed,
+                              const std::vector<int>& heldByPrior) {
   std::sort(touched.begin(), touched.end());
   touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
   FactorGraph added;
@@ -511,9 +512,16 @@ void SemanticSlam::applyEdits(std::vector<std::size_t> touched, std::vector<Fact
       addedBy.push_back(r);
     }
   }
+  const Values& estimate = smoother_->estimate();
+  for (int landmark : heldByPrior) {  // after the records' factors
+    added.add(landmarkPrior(landmark, estimate.value(landmarks_[landmark].key), std::max(unassigned_.maxRange(), 1e-3)));
+  }
   if (added.size() == 0 && removed.empty()) return;
   const std::vector<FactorIndex> indices = smoother_->update(added, {}, removed);
-  for (std::size_t i = 0; i < indices.size(); ++i) records_[addedBy[i]].factors.push_back(indices[i]);
+  for (std::size_t i = 0; i < addedBy.size(); ++i) records_[addedBy[i]].factors.push_back(indices[i]);
+  for (std::size_t i = 0; i < heldByPrior.size(); ++i) {
+    landmarks_[heldByPrior[i]].weakPrior = indices[addedBy.size() + i];
+  }
 }
 
 FactorPtr SemanticSlam::landmarkPrior(int landmark, const Value& value, double positionSigma) const {
@@ -616,18 +624,22 @@ void SemanticSlam::confirmIfDue(int landmark, double time, std::vector<FactorInd
   landmarks_[landmark].weakPrior.reset();
 }
 
-void SemanticSlam::mergeProvisionalLandmarks(std::vector<std::size_t>& touched, std::vector<FactorIndex>& removed) {
-  // (§5) P merges into an active landmark L when the difference of their positions passes the χ² gate under their
-  // joint marginal and "one landmark" explains it better than a second, uniformly placed one:
+void SemanticSlam::mergeDuplicateLandmarks(const std::vector<bool>& seen, std::vector<std::size_t>& touched,
+                                           std::vector<FactorIndex>& removed, std::vector<int>& heldByPrior) {
+  // (§5) A landmark P merges into an active landmark L when the difference of their positions passes the χ² gate
+  // under their joint marginal and "one landmark" explains it better than a second, uniformly placed one:
   //     N(p_P − p_L; 0, Σ_d) · M Σ_c P(c | P) P(c | L)  >  ρ,
   // Σ_d = J_P Σ_PP J_Pᵀ + J_L Σ_LL J_Lᵀ − J_P Σ_PL J_Lᵀ − J_L Σ_LP J_Pᵀ (J: tangent → world position), ρ the
   // unassigned hypothesis's Cartesian density. Never when a step has a detection on each (exclusion, §4).
+  // Tested: every provisional landmark (against the confirmed ones and the older provisional ones), and every
+  // confirmed landmark seen at this step (§5c: against the other confirmed ones; of a confirmed pair the newer
+  // merges into the older, and its variable, left without factors, gets the weak prior of a provisional one).
   const Values& estimate = smoother_->estimate();
-  std::vector<int> provisional, nearby;
+  std::vector<int> movers, nearby;
   for (int j = 0; j < landmarks(); ++j) {
-    if (lifecycle_.provisional(j)) provisional.push_back(j);
+    if (lifecycle_.provisional(j) || (lifecycle_.active(j) && seen[static_cast<std::size_t>(j)])) movers.push_back(j);
   }
-  if (provisional.empty()) return;
+  if (movers.empty()) return;
   const double range = unassigned_.maxRange();
   std::vector<Vector> positions(static_cast<std::size_t>(landmarks()));  // of the active landmarks, read once
   for (int j = 0; j < landmarks(); ++j) {
@@ -635,17 +647,19 @@ void SemanticSlam::mergeProvisionalLandmarks(std::vector<std::size_t>& touched, 
   }
   auto position = [&](int j) -> const Vector& { return positions[static_cast<std::size_t>(j)]; };
   for (int j = 0; j < landmarks(); ++j) {
-    if (!lifecycle_.active(j) || lifecycle_.provisional(j)) continue;
-    for (int p : provisional) {
+    if (!lifecycle_.active(j) || lifecycle_.provisional(j) || std::binary_search(movers.begin(), movers.end(), j)) {
+      continue;
+    }
+    for (int p : movers) {
       if ((position(j) - position(p)).norm() <= range) {
         nearby.push_back(j);
         break;
       }
     }
   }
-  if (nearby.empty() && provisional.size() < 2) return;  // nothing to merge into: no marginal to take
+  if (nearby.empty() && movers.size() < 2) return;  // nothing to merge into: no marginal to take
   std::vector<Key> keys;
-  for (int j : provisional) keys.push_back(landmarks_[j].key);
+  for (int j : movers) keys.push_back(landmarks_[j].key);
   for (int j : nearby) keys.push_back(landmarks_[j].key);
   const JointMarginal marginal = smoother_->jointMarginal(keys);
   const int d = factory_.dimension();
@@ -658,14 +672,21 @@ void SemanticSlam::mergeProvisionalLandmarks(std::vector<std::size_t>& touched, 
     return jacobian;
   };
   const double classes = header_.classes > 0 ? header_.classes : 1;
-  for (int p : provisional) {
-    if (!lifecycle_.provisional(p)) continue;
+  for (int p : movers) {
+    if (!lifecycle_.active(p)) continue;  // merged away earlier in this loop
+    const bool provisional = lifecycle_.provisional(p);
     const std::vector<int> stepsOfP = stepsOn(p);
     std::optional<int> best;
     double bestScore = unassigned_.logCartesianDensity();
-    std::vector<int> targets = nearby;
-    for (int q : provisional) {
-      if (q < p && lifecycle_.provisional(q)) targets.push_back(q);  // into an older provisional one
+    std::vector<int> targets;
+    for (int l : nearby) {
+      if (lifecycle_.active(l)) targets.push_back(l);
+    }
+    for (int q : movers) {
+      if (q == p || !lifecycle_.active(q)) continue;
+      // A provisional landmark goes into a confirmed one or an older provisional one; a confirmed one is tested
+      // against confirmed ones only (a provisional one is tested against it in its own turn).
+      if (provisional ? (!lifecycle_.provisional(q) || q < p) : !lifecycle_.provisional(q)) targets.push_back(q);
     }
     for (int l : targets) {
       const Vector difference = position(p) - position(l);
@@ -696,7 +717,14 @@ void SemanticSlam::mergeProvisionalLandmarks(std::vector<std::size_t>& touched, 
       best = l;
       bestScore = score;
     }
-    if (best) mergeLandmark(p, *best, touched, removed);
+    if (!best) continue;
+    if (provisional) {
+      mergeLandmark(p, *best, touched, removed);
+    } else {
+      const int newer = std::max(p, *best), older = std::min(p, *best);
+      mergeLandmark(newer, older, touched, removed);
+      heldByPrior.push_back(newer);
+    }
   }
 }
 
@@ -719,8 +747,9 @@ void SemanticSlam::updateLifecycle(int k, double time, int landmarksBeforeStep) 
     const Vector inSensor = factory_.positionInSensorFrame(robot, estimate.value(landmarks_[j].key));
     if (unassigned_.inField(inSensor) && lifecycle_.passedInField(j)) dropLandmark(j, touched);
   }
-  mergeProvisionalLandmarks(touched, removed);
-  applyEdits(std::move(touched), std::move(removed));
+  std::vector<int> heldByPrior;
+  mergeDuplicateLandmarks(seen, touched, removed, heldByPrior);
+  applyEdits(std::move(touched), std::move(removed), heldByPrior);
 }
 
 bool SemanticSlam::repairExclusion(std::size_t first, std::size_t end) {

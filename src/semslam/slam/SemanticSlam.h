@@ -36,7 +36,9 @@
 //      from an unassigned detection is provisional (a weak prior, σ = r_max per axis, keeps it well-posed whatever
 //      happens to its detections) until the M-of-N rule (LandmarkLifecycle.h) confirms it (its prior is removed),
 //      drops it (its detections are left on no landmark) or a merge test puts it into a mapped landmark (its
-//      detections move there); the graph edits of a step are one smoother update. Then exclusion is repaired
+//      detections move there); a confirmed landmark seen at the step is tested the same way against the other
+//      confirmed ones, and of a duplicate pair the newer merges into the older (§5c; its variable gets the weak
+//      prior back); the graph edits of a step are one smoother update. Then exclusion is repaired
 //      (§4): while two of the step's mixtures use one landmark at the estimate, the worse of them loses that
 //      component, and the step is re-solved. finish() drops what is still provisional and repairs every step.
 // Decisions where paper B is silent are in docs/max-mixtures.md.
@@ -177,14 +179,18 @@ class SemanticSlam {
   std::vector<FactorPtr> associationFactors(DetectionRecord& record) const;
   /// The factors a record stands for now: its own landmark's factor, its candidates' factors, or none.
   std::vector<FactorPtr> recordFactors(DetectionRecord& record) const;
-  /// Replaces the factors of `touched` records by recordFactors() and removes `removed`, in one update.
-  void applyEdits(std::vector<std::size_t> touched, std::vector<FactorIndex> removed);
+  /// Replaces the factors of `touched` records by recordFactors(), removes `removed` and gives each landmark of
+  /// `heldByPrior` a weak prior at its estimate, in one update.
+  void applyEdits(std::vector<std::size_t> touched, std::vector<FactorIndex> removed,
+                  const std::vector<int>& heldByPrior = {});
   /// Step 6 (§5) after step `k`'s solve: confirmations, drops of landmarks in the field, merges; one update.
   void updateLifecycle(int k, double time, int landmarksBeforeStep);
   void dropLandmark(int landmark, std::vector<std::size_t>& touched);
   void mergeLandmark(int landmark, int into, std::vector<std::size_t>& touched, std::vector<FactorIndex>& removed);
-  /// Merge tests of every provisional landmark against the active landmarks within the sensor's range of it.
-  void mergeProvisionalLandmarks(std::vector<std::size_t>& touched, std::vector<FactorIndex>& removed);
+  /// Merge tests (§5, §5c) of every provisional landmark and every confirmed one `seen` at this step against the
+  /// active landmarks within the sensor's range of it; confirmed landmarks merged away go to `heldByPrior`.
+  void mergeDuplicateLandmarks(const std::vector<bool>& seen, std::vector<std::size_t>& touched,
+                               std::vector<FactorIndex>& removed, std::vector<int>& heldByPrior);
   /// A detection at `time` on `landmark` counts towards confirming it; once confirmed, its weak prior goes.
   void confirmIfDue(int landmark, double time, std::vector<FactorIndex>& removed);
   /// Removes `landmark` from the record's candidates (weight, likelihood, assignment), renormalising the rest.
