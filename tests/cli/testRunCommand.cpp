@@ -68,7 +68,7 @@ TEST(RunCommand, MaxMixtureMethodsWriteTheRunFolderAndMetrics) {
     std::ifstream associations(out / "associations.csv");
     std::string header;
     std::getline(associations, header);
-    EXPECT_EQ(header, "step,detection,landmark,weight,truth");
+    EXPECT_EQ(header, "step,detection,landmark,weight,truth,chi2");
   }
   // The same run twice gives the same files, bit for bit.
   const fs::path again = dir / "again";
@@ -79,6 +79,33 @@ TEST(RunCommand, MaxMixtureMethodsWriteTheRunFolderAndMetrics) {
     EXPECT_EQ(first, second) << file;
   }
   EXPECT_EQ(runSemslam("run --method mm-nh --gate 1.5 --in \"" + log.string() + "\" --out \"" + again.string() + "\"").exitCode, 2);
+  fs::remove_all(dir);
+}
+
+TEST(RunCommand, AssociationsReportEachDetectionsResidualAtTheFinalEstimate) {
+  // chi2 = rᵀR⁻¹r of each detection on a landmark at the final estimate. The simulator draws the detections from
+  // their stated covariance, so under known association the mean over 272 detections is near the measurement
+  // dimension 2, less the share of the 54 landmark coordinates and the poses fitted to them (1.54 here); a wrong
+  // covariance (S for R, σ for σ²) or a detection scored against the wrong landmark is far off.
+  const fs::path dir = freshDirectory("semslam_run_chi2");
+  const fs::path log = dir / "run.jsonl";
+  ASSERT_EQ(runSemslam("simulate semantic --steps 300 --seed 4 --out \"" + log.string() + "\"").exitCode, 0);
+  const fs::path out = dir / "known";
+  ASSERT_EQ(runSemslam("run --method known --no-covariances --in \"" + log.string() + "\" --out \"" + out.string() + "\"").exitCode, 0);
+  std::ifstream associations(out / "associations.csv");
+  std::string row;
+  std::getline(associations, row);
+  double sum = 0.0;
+  int count = 0;
+  while (std::getline(associations, row)) {
+    const std::string chi2 = row.substr(row.rfind(',') + 1);
+    ASSERT_FALSE(chi2.empty()) << row;
+    sum += std::stod(chi2);
+    ++count;
+  }
+  ASSERT_EQ(count, 272);
+  EXPECT_GT(sum / count, 1.2);
+  EXPECT_LT(sum / count, 2.0);
   fs::remove_all(dir);
 }
 

@@ -72,10 +72,11 @@ void writeRunFolder(const std::string& directory, const RunOutput& run) {
   });
   if (!run.associations.empty()) {
     writeFileAtomically((folder / "associations.csv").string(), [&](std::ostream& out) {
-      out << "step,detection,landmark,weight,truth\n";
+      out << "step,detection,landmark,weight,truth,chi2\n";
       for (const AssociationRecord& a : run.associations) {
         out << a.step << "," << a.detection << "," << (a.landmark ? std::to_string(*a.landmark) : "null") << ","
-            << seventeenDigitNumber(a.weight) << "," << truthField(a.truth) << "\n";
+            << seventeenDigitNumber(a.weight) << "," << truthField(a.truth) << ","
+            << (a.chi2 ? seventeenDigitNumber(*a.chi2) : "") << "\n";
       }
     });
   }

@@ -8,8 +8,9 @@
 //   landmarks_truth.csv    `id,x,y[,z],class`, where known
 //   covariances.csv        `kind,id,cxx,cxy,cyy`: the position block of each pose's (kind `pose`, id = its index
 //                          in trajectory.tum) and landmark's marginal covariance, for covariance ellipses
-//   associations.csv       `step,detection,landmark,weight,truth` (landmark `null` for the null hypothesis, truth
-//                          `not-a-landmark` for clutter, empty where unknown)
+//   associations.csv       `step,detection,landmark,weight,truth,chi2` (landmark `null` for the null hypothesis,
+//                          truth `not-a-landmark` for clutter, empty where unknown; chi2 = rᵀR⁻¹r of the detection
+//                          against its landmark at the final estimate, empty without a landmark)
 // metrics.json is written by io/RunMetricsFile.h. Every file is written atomically (io/AtomicFile.h); a file whose
 // data is empty (no truth, no associations) is not written.
 

@@ -28,6 +28,10 @@ struct AssociationRecord {
   std::optional<int> landmark;   // nullopt: the null hypothesis
   double weight = 1.0;
   std::optional<int> truth;      // a landmark id, kNotALandmark for clutter, nullopt when unknown
+  /// rᵀ R⁻¹ r of the detection against its landmark at the final estimate (R: the detection's own covariance,
+  /// no state uncertainty): the consistency of the decision with the map. nullopt: no landmark, or a method that
+  /// does not report it (the hybrid belief).
+  std::optional<double> chi2;
 };
 
 /// What a method reports at the end of a run. Leave a member empty when the method does not produce it.

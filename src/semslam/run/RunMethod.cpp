@@ -39,7 +39,7 @@ void runSemanticSlam(const MeasurementLog& log, const MethodOptions& options, co
   for (const DetectionRecord& record : slam.detections()) {
     const auto [landmark, weight] = slam.chosenAssociation(record);
     if (slamOptions.strategy == AssociationStrategy::Known && !landmark) continue;  // clutter: no factor
-    associations.push_back({record.step, record.detection, landmark, weight, record.truth});
+    associations.push_back({record.step, record.detection, landmark, weight, record.truth, slam.residualChi2(record)});
   }
   run.output = runOutputFrom(log, run.result, std::move(associations));
 }

@@ -818,6 +818,13 @@ std::pair<std::optional<int>, double> SemanticSlam::chosenAssociation(const Dete
   return {record.candidates[best], record.weights[best]};
 }
 
+std::optional<double> SemanticSlam::residualChi2(const DetectionRecord& record) const {
+  const std::optional<int> landmark = chosenAssociation(record).first;
+  if (!landmark) return std::nullopt;
+  const Key pose = poseKeys_[static_cast<std::size_t>(record.step)];
+  return factory_.detectionFactor(pose, landmarks_[*landmark].key, record.measurement)->chi2(smoother_->estimate());
+}
+
 RunResult SemanticSlam::result(bool withPoseCovariances) const {
   RunResult result;
   result.method = strategyName(options_.strategy);

@@ -139,6 +139,9 @@ class SemanticSlam {
   RunResult result(bool withPoseCovariances = true) const;
   /// The landmark (or null hypothesis: nullopt) record r uses at the current estimate, and its weight.
   std::pair<std::optional<int>, double> chosenAssociation(const DetectionRecord& record) const;
+  /// rᵀ R⁻¹ r of the detection against the landmark chosenAssociation() gives, at the current estimate (R: the
+  /// detection's covariance); nullopt when it is on no landmark.
+  std::optional<double> residualChi2(const DetectionRecord& record) const;
 
  private:
   struct Landmark {
