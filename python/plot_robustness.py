@@ -25,6 +25,7 @@ METHOD_LABEL = {"known": "Known DA", "ml": "ML", "gpda": "GPDA", "mm": "MM", "mm
 METHOD_COLOUR = {"known": "#4d4d4d", "ml": "#d62728", "gpda": "#ff7f0e", "mm": "#1f77b4", "mm-nh": "#2ca02c"}
 AXES = [("odom_noise", "odometry noise scale"), ("misclassification", "misclassification rate")]
 METRIC_LABEL = {"ate_rmse": "ATE RMSE (m)", "rot_rmse": "rotation RMSE (rad)", "da_accuracy": "DA accuracy",
+                "da_accuracy_real": "DA accuracy (true landmarks)",
                 "landmarks_estimated": "landmarks estimated", "time_s": "time (s)"}
 
 

@@ -165,16 +165,49 @@ def _robustness_table(rows, axis):
     def number(text, digits=3):
         return "–" if text == "" else f"{float(text):.{digits}f}"
 
-    lines = ["| level | method | ATE mean [m] | ATE 95 % CI | DA accuracy | DA 95 % CI | landmarks | stuck |",
-             "|---|---|---|---|---|---|---|---|"]
+    lines = ["| level | method | ATE mean [m] | ATE 95 % CI | DA accuracy | DA 95 % CI | da_accuracy_real | "
+             "landmarks | stuck |",
+             "|---|---|---|---|---|---|---|---|---|"]
     for row in rows:
         if row["axis"] != axis:
             continue
         stuck = "" if row["stuck_fraction"] == "" else f"{float(row['stuck_fraction']):.0%}"
         lines.append(f"| {row['level']} | {row['method']} | {number(row['ate_mean'])} | "
                      f"[{number(row['ate_ci_low'])}, {number(row['ate_ci_high'])}] | {number(row['da_mean'])} | "
-                     f"[{number(row['da_ci_low'])}, {number(row['da_ci_high'])}] | "
+                     f"[{number(row['da_ci_low'])}, {number(row['da_ci_high'])}] | {number(row['da_real_mean'])} | "
                      f"{number(row['landmarks_mean'], 1)} | {stuck} |")
+    return lines
+
+
+DA_UNKNOWN = ["ml", "gpda", "mm", "mm-nh"]
+
+
+def _robustness_readout(by_rule):
+    """Paper B's Fig. 3 question, per birth rule: the first level of each sweep at which a method's mean
+    da_accuracy_real falls below 0.9, and at how many levels mm-nh has the highest mean da_accuracy_real of the
+    DA-unknown methods."""
+    lines = ["| birth rule | method | odometry noise: first level < 0.9 | misclassification: first level < 0.9 | "
+             "levels where it is the best DA-unknown method |", "|---|---|---|---|---|"]
+    for rule, rows in by_rule:
+        levels = {}
+        for row in rows:
+            if row["da_real_mean"] != "":
+                levels.setdefault((row["axis"], row["level"]), {})[row["method"]] = float(row["da_real_mean"])
+        best = {}
+        for (axis, level), means in levels.items():
+            candidates = {m: v for m, v in means.items() if m in DA_UNKNOWN}
+            if candidates:
+                top = max(candidates.values())
+                for m, v in candidates.items():
+                    if v == top:
+                        best[m] = best.get(m, 0) + 1
+        for method in [m for m in DA_UNKNOWN if any(row["method"] == m for row in rows)]:
+            first = []
+            for axis in ("odom_noise", "misclassification"):
+                below = [float(level) for (a, level), means in levels.items()
+                         if a == axis and method in means and means[method] < 0.9]
+                first.append(f"{min(below):g}" if below else "never")
+            lines.append(f"| {rule} | {method} | {first[0]} | {first[1]} | {best.get(method, 0)} of {len(levels)} |")
     return lines
 
 
@@ -194,18 +227,30 @@ def robustness_sections(semslam, data, scratch, shown):
         log = os.path.join(scratch, f"robustness-{name}.jsonl")
         convert = [semslam, "convert", kind, path, "--out", log] + options
         _run(convert)
-        out = os.path.join("docs", "results", "robustness", name)
-        os.makedirs(out, exist_ok=True)
-        study = [semslam, "study", "robustness", "--log", log, "--max-steps", str(steps), "--out", out] + ROBUSTNESS_STUDY
-        summary = _run(study).strip()
-        plot = [sys.executable, os.path.join(HERE, "plot_robustness.py"), out]
-        _run(plot)
-        with open(os.path.join(out, "robustness_summary.csv")) as f:
-            rows = list(csv.DictReader(f))
-        lines += [f"### {title}, first {steps} keyframes", "", "```sh", shown(convert).replace(log, f"{name}.jsonl"),
-                  shown(study).replace(log, f"{name}.jsonl"), f"python3 python/plot_robustness.py {out}", "```", "",
-                  f"`{summary.replace(log, name + '.jsonl')}`", "",
-                  f"![box plots]({os.path.relpath(out, 'docs')}/robustness.png)", "", "Odometry noise scale:", ""]
-        lines += _robustness_table(rows, "odom_noise") + ["", "Misclassification rate:", ""]
-        lines += _robustness_table(rows, "misclassification") + [""]
+        by_rule = []
+        for rule, suffix in (("unassigned", ""), ("threshold", "-threshold")):
+            out = os.path.join("docs", "results", "robustness", name + suffix)
+            os.makedirs(out, exist_ok=True)
+            study = [semslam, "study", "robustness", "--log", log, "--max-steps", str(steps), "--out", out,
+                     "--birth", rule] + ROBUSTNESS_STUDY
+            summary = _run(study).strip()
+            plot = [sys.executable, os.path.join(HERE, "plot_robustness.py"), out, "--metrics",
+                    "ate_rmse,rot_rmse,da_accuracy,da_accuracy_real"]
+            _run(plot)
+            with open(os.path.join(out, "robustness_summary.csv")) as f:
+                rows = list(csv.DictReader(f))
+            by_rule.append((rule, rows))
+            heading = f"### {title}, first {steps} keyframes, `--birth {rule}`" + (
+                " (the default)" if rule == "unassigned" else " (paper B's rule)")
+            lines += [heading, "", "```sh", shown(convert).replace(log, f"{name}.jsonl"),
+                      shown(study).replace(log, f"{name}.jsonl"), " ".join(["python3"] + plot[1:]).replace(HERE + "/", "python/"),
+                      "```", "", f"`{summary.replace(log, name + '.jsonl')}`", "",
+                      f"![box plots]({os.path.relpath(out, 'docs')}/robustness.png)", "", "Odometry noise scale:", ""]
+            lines += _robustness_table(rows, "odom_noise") + ["", "Misclassification rate:", ""]
+            lines += _robustness_table(rows, "misclassification") + [""]
+        lines += [f"### {title}: where each method falls below 90 % `da_accuracy_real` (paper B's Fig. 3 question)",
+                  "", "The first level of each sweep whose mean `da_accuracy_real` over the seeds is below 0.9, and "
+                  "how many of the sweeps' levels each DA-unknown method leads (highest mean `da_accuracy_real`; ties "
+                  "count for each), with the default birth rule and paper B's beside it.", ""]
+        lines += _robustness_readout(by_rule) + [""]
     return lines

@@ -129,11 +129,12 @@ RobustnessStudy runRobustnessStudy(const MeasurementLog& log, const RobustnessSt
         row.ateRmse = m.ateRmse;
         row.rotRmse = m.rotRmse;
         row.daAccuracy = m.daAccuracy;
+        row.daAccuracyReal = m.daAccuracyReal;
         row.landmarksEstimated = m.landmarksEstimated;
         row.landmarksTrue = m.landmarksTrue;
         row.timeSeconds = run.result.timeSeconds;
       } catch (const std::exception& error) {
-        row.ateRmse = row.rotRmse = row.daAccuracy = row.timeSeconds = kNaN;
+        row.ateRmse = row.rotRmse = row.daAccuracy = row.daAccuracyReal = row.timeSeconds = kNaN;
         row.error = error.what();
       }
       rows.push_back(std::move(row));
@@ -192,10 +193,12 @@ RobustnessStudy runRobustnessStudy(const MeasurementLog& log, const RobustnessSt
 
 std::string robustnessCsv(const std::vector<RobustnessRow>& rows) {
   std::ostringstream out;
-  out << "axis,level,seed,method,ate_rmse,rot_rmse,da_accuracy,landmarks_estimated,landmarks_true,time_s,stuck\n";
+  out << "axis,level,seed,method,ate_rmse,rot_rmse,da_accuracy,da_accuracy_real,landmarks_estimated,landmarks_true,"
+         "time_s,stuck\n";
   for (const RobustnessRow& row : rows) {
     out << robustnessAxisName(row.axis) << "," << number(row.level) << "," << row.seed << "," << row.method << ","
         << number(row.ateRmse) << "," << number(row.rotRmse) << "," << number(row.daAccuracy) << ","
+        << number(row.daAccuracyReal) << ","
         << count(row.landmarksEstimated) << "," << count(row.landmarksTrue) << "," << number(row.timeSeconds) << ","
         << (row.stuck ? (*row.stuck ? "1" : "0") : "") << "\n";
   }
@@ -249,7 +252,7 @@ MeanInterval meanInterval(const std::vector<double>& values) {
 
 std::string robustnessSummaryCsv(const std::vector<RobustnessRow>& rows) {
   struct Group {
-    std::vector<double> ate, rot, da, landmarks, time;
+    std::vector<double> ate, rot, da, daReal, landmarks, time;
     int stuck = 0, stuckDefined = 0, failed = 0;
   };
   using Key = std::tuple<int, double, std::string>;
@@ -263,6 +266,7 @@ std::string robustnessSummaryCsv(const std::vector<RobustnessRow>& rows) {
     g.ate.push_back(row.ateRmse);
     g.rot.push_back(row.rotRmse);
     g.da.push_back(row.daAccuracy);
+    g.daReal.push_back(row.daAccuracyReal);
     g.landmarks.push_back(row.landmarksEstimated ? static_cast<double>(*row.landmarksEstimated) : kNaN);
     g.time.push_back(row.timeSeconds);
     if (row.stuck) {
@@ -273,15 +277,16 @@ std::string robustnessSummaryCsv(const std::vector<RobustnessRow>& rows) {
   }
   std::ostringstream out;
   out << "axis,level,method,n,ate_mean,ate_ci_low,ate_ci_high,rot_mean,rot_ci_low,rot_ci_high,da_mean,da_ci_low,"
-         "da_ci_high,landmarks_mean,time_mean,stuck_fraction,failed\n";
+         "da_ci_high,da_real_mean,da_real_ci_low,da_real_ci_high,landmarks_mean,time_mean,stuck_fraction,failed\n";
   for (const Key& key : order) {
     const Group& g = groups.at(key);
-    const MeanInterval ate = meanInterval(g.ate), rot = meanInterval(g.rot), da = meanInterval(g.da);
+    const MeanInterval ate = meanInterval(g.ate), rot = meanInterval(g.rot), da = meanInterval(g.da),
+                       daReal = meanInterval(g.daReal);
     out << robustnessAxisName(static_cast<RobustnessAxis>(std::get<0>(key))) << "," << number(std::get<1>(key))
         << "," << std::get<2>(key) << "," << ate.n << "," << number(ate.mean) << "," << number(ate.low) << ","
         << number(ate.high) << "," << number(rot.mean) << "," << number(rot.low) << "," << number(rot.high) << ","
-        << number(da.mean) << "," << number(da.low) << "," << number(da.high) << ","
-        << number(meanInterval(g.landmarks).mean) << "," << number(meanInterval(g.time).mean) << ","
+        << number(da.mean) << "," << number(da.low) << "," << number(da.high) << "," << number(daReal.mean) << ","
+        << number(daReal.low) << "," << number(daReal.high) << "," << number(meanInterval(g.landmarks).mean) << "," << number(meanInterval(g.time).mean) << ","
         << (g.stuckDefined > 0 ? number(static_cast<double>(g.stuck) / g.stuckDefined) : "") << "," << g.failed
         << "\n";
   }

@@ -65,6 +65,7 @@ struct RobustnessRow {
   int seed = 0;
   std::string method;
   double ateRmse = 0.0, rotRmse = 0.0, daAccuracy = 0.0;  ///< NaN where not applicable or the run failed
+  double daAccuracyReal = 0.0;     ///< over detections of true landmarks only (docs/metrics.md); NaN likewise
   std::optional<long long> landmarksEstimated, landmarksTrue;
   double timeSeconds = 0.0;
   std::optional<bool> stuck;
