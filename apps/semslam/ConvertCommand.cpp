@@ -36,9 +36,10 @@ void run(ConvertArguments arguments) {
   const MeasurementLog log = convertDataset(arguments.kind, arguments.path, options, &stats);
   writeMeasurementLog(arguments.out, log);
   std::printf(
-      "wrote %s: %s, %zu steps, %zu detections (%zu clutter), %zu landmarks, %zu true poses; dataset %zu steps, %zu "
-      "detections; dropped by keyframing %zu detections, by --max-steps %zu\n",
-      arguments.out.c_str(), arguments.kind.c_str(), stats.steps, stats.detections, stats.clutter, stats.landmarks,
+      "wrote %s: %s, %zu steps, %zu detections (%zu clutter, %zu unknown), %zu landmarks, %zu true poses; dataset "
+      "%zu steps, %zu detections; dropped by keyframing %zu detections, by --max-steps %zu\n",
+      arguments.out.c_str(), arguments.kind.c_str(), stats.steps, stats.detections, stats.clutter,
+      stats.unknownTruth, stats.landmarks,
       stats.truePoses, stats.datasetSteps, stats.datasetDetections, stats.detectionsDroppedByKeyframing,
       stats.detectionsDroppedByMaxSteps);
 }

@@ -27,7 +27,7 @@ struct AssociationRecord {
   int detection = 0;
   std::optional<int> landmark;   // nullopt: the null hypothesis
   double weight = 1.0;
-  std::optional<int> truth;      // a landmark id, kNotALandmark for clutter, nullopt when unknown
+  std::optional<int> truth;      // a landmark id, kNotALandmark for clutter, kUnknownTruth, nullopt when absent
 };
 
 /// What a method reports at the end of a run. Leave a member empty when the method does not produce it.

@@ -15,6 +15,19 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+/// The steps as the known-association oracle may read them: a detection whose truth is kUnknownTruth (the dataset
+/// cannot decide) gets no truth, so the oracle adds no factor for it, as for clutter (docs/measurement-log.md,
+/// "Detections"); the other methods never read the truth.
+std::vector<TimeStep> oracleSteps(const std::vector<TimeStep>& steps) {
+  std::vector<TimeStep> copy = steps;
+  for (TimeStep& step : copy) {
+    for (Detection& detection : step.detections) {
+      if (detection.truthId == kUnknownTruth) detection.truthId.reset();
+    }
+  }
+  return copy;
+}
+
 /// Paper B: the pipeline over every step, the final estimate, and each detection's chosen landmark.
 void runSemanticSlam(const MeasurementLog& log, const MethodOptions& options, const RunProgress& progress,
                      MethodRun& run) {
@@ -24,9 +37,12 @@ void runSemanticSlam(const MeasurementLog& log, const MethodOptions& options, co
 
   const auto start = std::chrono::steady_clock::now();
   SemanticSlam slam(log.header, slamOptions);
-  const int steps = static_cast<int>(log.steps.size());
+  const bool known = slamOptions.strategy == AssociationStrategy::Known;
+  const std::vector<TimeStep> oracle = known ? oracleSteps(log.steps) : std::vector<TimeStep>{};
+  const std::vector<TimeStep>& input = known ? oracle : log.steps;
+  const int steps = static_cast<int>(input.size());
   for (int k = 0; k < steps; ++k) {
-    slam.addStep(log.steps[k]);
+    slam.addStep(input[k]);
     if (progress) progress(k + 1, steps);
   }
   slam.finish();
@@ -39,7 +55,10 @@ void runSemanticSlam(const MeasurementLog& log, const MethodOptions& options, co
   for (const DetectionRecord& record : slam.detections()) {
     const auto [landmark, weight] = slam.chosenAssociation(record);
     if (slamOptions.strategy == AssociationStrategy::Known && !landmark) continue;  // clutter: no factor
-    associations.push_back({record.step, record.detection, landmark, weight, record.truth});
+    const std::optional<int> truth = log.steps[static_cast<std::size_t>(record.step)]
+                                         .detections[static_cast<std::size_t>(record.detection)]
+                                         .truthId;  // the log's, "unknown" included
+    associations.push_back({record.step, record.detection, landmark, weight, truth});
   }
   run.output = runOutputFrom(log, run.result, std::move(associations));
 }

@@ -142,6 +142,7 @@ MeasurementLog finishConversion(MeasurementLog raw, const ConvertOptions& option
     if (step.truePose) ++counts.truePoses;
     for (const Detection& detection : step.detections) {
       if (detection.truthId && *detection.truthId == kNotALandmark) ++counts.clutter;
+      if (detection.truthId && *detection.truthId == kUnknownTruth) ++counts.unknownTruth;
     }
   }
 
@@ -158,7 +159,9 @@ MeasurementLog finishConversion(MeasurementLog raw, const ConvertOptions& option
            << counts.detectionsDroppedByMaxSteps << " detections";
   }
   source << "; written " << counts.steps << " steps, " << counts.detections << " detections (" << counts.clutter
-         << " clutter)";
+         << " clutter";
+  if (counts.unknownTruth > 0) source << ", " << counts.unknownTruth << " unknown";
+  source << ")";
   log.header.source = source.str();
   if (stats != nullptr) *stats = counts;
   return log;

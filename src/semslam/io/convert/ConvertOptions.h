@@ -53,6 +53,7 @@ struct ConversionStats {
   std::size_t steps = 0;              ///< steps written
   std::size_t detections = 0;         ///< detections written
   std::size_t clutter = 0;            ///< detections written whose truth is "not a landmark"
+  std::size_t unknownTruth = 0;       ///< detections written whose truth is "unknown" (kUnknownTruth)
   std::size_t truePoses = 0;          ///< steps written with a true pose
   std::size_t landmarks = 0;          ///< landmarks in the ground truth
   std::size_t stepsDroppedByKeyframing = 0;
