@@ -61,11 +61,37 @@ TEST(CheckCommand, PrintsTheSummaryOfAValidLog) {
            "steps:         3 (2 with odometry, 1 with a true pose)",
            "duration:      2 s (time 10 to 12)",
            "detections:    4; per step min 0, mean 1.333, max 3",
-           "ground truth:  2 landmarks; 3 detections with truth (2 of a landmark, 1 clutter), 1 without",
+           "ground truth:  2 landmarks; 3 detections with truth (2 of a landmark, 1 clutter, 0 unknown), 1 without",
            "priors:        initial pose no; 0 landmark priors",
        }) {
     EXPECT_NE(run.output.find(expected), std::string::npos) << "missing \"" << expected << "\" in:\n" << run.output;
   }
+}
+
+TEST(CheckCommand, CountsUnknownTruthAndLeavesItOutOfTheResiduals) {
+  // Version 2: the third detection of step 1 has truth "unknown" (docs/measurement-log.md, "Detections").
+  CheckDir dir;
+  std::string header = kHeader;
+  header.replace(header.find(R"("version":1)"), 11, R"("version":2)");
+  std::string step1 = kStep1;
+  step1.replace(step1.find(R"("label":0}]})"), 12, R"("label":0,"truth":"unknown"}]})");
+  const std::string log = dir.file("unknown.jsonl", header + "\n" + kStep0 + "\n" + step1 + "\n" + kStep2 + "\n");
+  const auto run = runSemslam("check --residuals " + log);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("valid semslam-log, version 2"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("4 detections with truth (2 of a landmark, 1 clutter, 1 unknown), 0 without"),
+            std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("1 clutter, 1 unknown truth, 2 without a true pose"), std::string::npos) << run.output;
+
+  // The same detection in a version-1 file is an error naming the line.
+  std::string old = header;
+  old.replace(old.find(R"("version":2)"), 11, R"("version":1)");
+  const auto rejected = runSemslam("check " + dir.file("old.jsonl", old + "\n" + kStep0 + "\n" + step1 + "\n"));
+  EXPECT_EQ(rejected.exitCode, 2) << rejected.output;
+  EXPECT_NE(rejected.output.find("old.jsonl:3: detections[2].truth: \"unknown\" truth needs version 2"),
+            std::string::npos)
+      << rejected.output;
 }
 
 TEST(CheckCommand, MalformedLogExitsWithCodeTwoNamingFileLineAndProblem) {

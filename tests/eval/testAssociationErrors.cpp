@@ -141,5 +141,35 @@ TEST(AssociationErrors, RenamingTheEstimatesChangesNothing) {
   }
 }
 
+TEST(AssociationErrors, UnknownTruthChangesNothing) {
+  // A merge, a split, clutter both ways; then the same with detections of truth "unknown" (docs/metrics.md) on
+  // a matched estimate, an unmatched one, a new one and the null hypothesis: every count and ratio is unchanged.
+  const auto base = make({{a, 1}, {a, 1}, {a, 1}, {b, 1}, {b, 1}, {c, 2}, {c, 2}, {c, 3}, {c, 3}, {kClutter, 2},
+                          {kClutter, std::nullopt}});
+  auto withUnknown = base;
+  for (const std::optional<int> estimate : {std::optional<int>(1), std::optional<int>(3), std::optional<int>(9),
+                                            std::optional<int>()}) {
+    withUnknown.push_back({kUnknownTruth, estimate});
+    withUnknown.push_back({kUnknownTruth, estimate});
+  }
+  const AssociationErrors x = evaluate(base);
+  const AssociationErrors y = evaluate(withUnknown);
+  EXPECT_EQ(x.realTotal, y.realTotal);
+  EXPECT_EQ(x.realCorrect, y.realCorrect);
+  EXPECT_EQ(x.clutter, y.clutter);
+  EXPECT_EQ(x.clutterUnassigned, y.clutterUnassigned);
+  EXPECT_EQ(x.pairsBoth, y.pairsBoth);
+  EXPECT_EQ(x.pairsSameEstimate, y.pairsSameEstimate);
+  EXPECT_EQ(x.pairsSameTruth, y.pairsSameTruth);
+  EXPECT_EQ(x.landmarksMerged, y.landmarksMerged);
+  EXPECT_EQ(x.landmarksSplit, y.landmarksSplit);
+  EXPECT_EQ(x.landmarksMerged, 1u);
+  EXPECT_EQ(x.landmarksSplit, 1u);
+  for (const auto& [p, q] : {std::pair{x.accuracyReal, y.accuracyReal}, std::pair{x.pairwisePrecision, y.pairwisePrecision},
+                             std::pair{x.pairwiseRecall, y.pairwiseRecall}, std::pair{x.clutterRejected, y.clutterRejected}}) {
+    EXPECT_EQ(p, q);
+  }
+}
+
 }  // namespace
 }  // namespace semslam

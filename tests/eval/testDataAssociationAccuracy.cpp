@@ -132,7 +132,31 @@ TEST(DataAssociationAccuracy, EmptyInputAndInvalidTruth) {
   const DataAssociationAccuracy none = evaluateDataAssociation({});
   EXPECT_TRUE(std::isnan(none.accuracy));
   EXPECT_EQ(none.total, 0u);
-  EXPECT_THROW(evaluateDataAssociation(make({{-2, 1}})), InputError);
+  EXPECT_THROW(evaluateDataAssociation(make({{-3, 1}})), InputError);
+}
+
+TEST(DataAssociationAccuracy, UnknownTruthChangesNothing) {
+  // kUnknownTruth (docs/metrics.md) is left out: on any estimate, on the null hypothesis, or alone.
+  const auto base = make({{0, 3}, {0, 3}, {0, 4}, {1, 4}, {1, 4}, {kClutter, 5}, {kClutter, std::nullopt}});
+  auto withUnknown = base;
+  for (const std::optional<int> estimate : {std::optional<int>(3), std::optional<int>(4), std::optional<int>(9),
+                                            std::optional<int>()}) {
+    withUnknown.push_back({kUnknownTruth, estimate});
+  }
+  const DataAssociationAccuracy a = evaluateDataAssociation(base);
+  const DataAssociationAccuracy b = evaluateDataAssociation(withUnknown);
+  EXPECT_EQ(a.correct, b.correct);
+  EXPECT_EQ(a.total, b.total);
+  EXPECT_EQ(a.nullChosen, b.nullChosen);
+  EXPECT_EQ(a.clutter, b.clutter);
+  EXPECT_EQ(a.clutterRejected, b.clutterRejected);
+  EXPECT_EQ(a.accuracy, b.accuracy);
+  EXPECT_EQ(a.matching.pairs.size(), b.matching.pairs.size());
+  for (const LandmarkPair& p : a.matching.pairs) EXPECT_EQ(b.matching.truthOf(p.estimated), p.truth);
+  EXPECT_FALSE(b.matching.truthOf(9));  // an estimate seen only by unknown detections matches nothing
+  const DataAssociationAccuracy onlyUnknown = evaluateDataAssociation(make({{kUnknownTruth, 1}}));
+  EXPECT_EQ(onlyUnknown.total, 0u);
+  EXPECT_TRUE(std::isnan(onlyUnknown.accuracy));
 }
 
 }  // namespace

@@ -239,6 +239,47 @@ TEST(RunEvaluation, EndToEndOnASmallLog) {
   EXPECT_EQ(runMetricsToJson(readRunMetrics(file.path())), runMetricsToJson(m));
 }
 
+TEST(RunEvaluation, UnknownTruthChangesNoMetric) {
+  // The same log and result, plus detections whose truth is "unknown" (docs/metrics.md) on an estimated landmark,
+  // on another one and on the null hypothesis, in a step with other detections and in one without: every metric
+  // is the same, to the byte of its JSON.
+  const MeasurementLog log = smallLog();
+  RunResult result;
+  result.method = "mm-nh";
+  for (const TimeStep& step : log.steps) {
+    result.poses.push_back(std::get<SE2>(*step.truePose));
+    result.poseCovariances.push_back(Matrix3::Identity() * 0.01);
+  }
+  result.associations = {{7, std::nullopt}, {8}, {7, 7}, {std::nullopt}};
+  result.landmarks = {{7, Point2(5.0, 0.0), Vector2(0.9, 0.1)}, {8, Point2(0.0, 5.0), Vector2(0.8, 0.2)}};
+  result.timeSeconds = 0.5;
+
+  MeasurementLog withUnknown = log;
+  RunResult resultWithUnknown = result;
+  withUnknown.steps[1].detections.push_back(detection(kUnknownTruth));
+  resultWithUnknown.associations[1].push_back(7);
+  withUnknown.steps[2].detections.push_back(detection(kUnknownTruth));
+  resultWithUnknown.associations[2].push_back(8);
+  withUnknown.steps[3].detections.push_back(detection(kUnknownTruth));
+  resultWithUnknown.associations[3].push_back(std::nullopt);
+
+  const RunMetrics m = evaluateRun(log, result).metrics;
+  EXPECT_EQ(m.daTotal, 5);
+  EXPECT_EQ(runMetricsToJson(evaluateRun(withUnknown, resultWithUnknown).metrics), runMetricsToJson(m));
+
+  // A log whose only truth is "unknown" scores like a log without detection truth.
+  MeasurementLog onlyUnknown = log;
+  MeasurementLog noTruth = log;
+  for (std::size_t k = 0; k < log.steps.size(); ++k) {
+    for (std::size_t i = 0; i < log.steps[k].detections.size(); ++i) {
+      onlyUnknown.steps[k].detections[i].truthId = kUnknownTruth;
+      noTruth.steps[k].detections[i].truthId.reset();
+    }
+  }
+  EXPECT_EQ(runMetricsToJson(evaluateRun(onlyUnknown, result).metrics),
+            runMetricsToJson(evaluateRun(noTruth, result).metrics));
+}
+
 TEST(RunEvaluation, MaxMarginalMethodWithoutHybridFields) {
   const MeasurementLog log = smallLog();
   RunResult result;

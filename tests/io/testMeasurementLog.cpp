@@ -99,6 +99,7 @@ MeasurementLog makeLog2(SemanticKind semantic, unsigned seed = 7) {
       if (semantic == SemanticKind::Scores) detection.classVector = scores(3, rng);
       if (d == 0) detection.truthId = k % 2 == 0 ? 4 : 9;
       if (d == 1 && k == 5) detection.truthId = kNotALandmark;
+      if (d == 1 && k == 2) detection.truthId = kUnknownTruth;
       step.detections.push_back(detection);
     }
     if (k % 2 == 0) step.truePose = randomSE2(rng);
@@ -372,12 +373,13 @@ TEST(MeasurementLogFile, DeterministicBytesAndLayout) {
   std::vector<std::string> all;
   while (std::getline(lines, line)) all.push_back(line);
   ASSERT_EQ(all.size(), log.steps.size() + 1);
-  EXPECT_EQ(all[0].rfind(R"({"format":"semslam-log","version":1,"dimension":2,"classes":3,"semantic":"label",)", 0),
+  EXPECT_EQ(all[0].rfind(R"({"format":"semslam-log","version":2,"dimension":2,"classes":3,"semantic":"label",)", 0),
             0u)
       << all[0];
   EXPECT_EQ(all[1].rfind(R"({"time":)", 0), 0u) << all[1];
   EXPECT_NE(all[2].find(R"(,"odometry":{"increment":[)"), std::string::npos) << all[2];
   EXPECT_NE(text.find(R"("truth":"not-a-landmark")"), std::string::npos);
+  EXPECT_NE(text.find(R"("truth":"unknown")"), std::string::npos);
   EXPECT_EQ(text.back(), '\n');
 }
 

@@ -107,7 +107,7 @@ TEST(MeasurementLogErrors, Header) {
        "sensor: unknown field 'maxrange'"},
       {"wrong_format", [](Json& h, auto&) { h["format"] = "semslam-graph"; }, 1,
        "format: expected \"semslam-log\", found \"semslam-graph\""},
-      {"newer_version", [](Json& h, auto&) { h["version"] = 2; }, 1, "version 2 is newer than this reader"},
+      {"newer_version", [](Json& h, auto&) { h["version"] = 3; }, 1, "version 3 is newer than this reader"},
       {"version_zero", [](Json& h, auto&) { h["version"] = 0; }, 1, "invalid version 0"},
       {"version_string", [](Json& h, auto&) { h["version"] = "1"; }, 1,
        "version: expected an integer, found string \"1\""},
@@ -252,13 +252,21 @@ TEST(MeasurementLogErrors, Steps) {
       {"semantic_mismatch", [](Json&, auto& s) { s[1]["detections"][1]["probabilities"] = {0.2, 0.3, 0.5}; }, 3,
        "detections[1]: field 'probabilities' does not match the header's semantic 'label' (expected 'label')"},
       {"truth_unknown_string", [](Json&, auto& s) { s[1]["detections"][1]["truth"] = "clutter"; }, 3,
-       "detections[1].truth: expected a landmark id or \"not-a-landmark\", found string \"clutter\""},
+       "detections[1].truth: expected a landmark id, \"not-a-landmark\" or \"unknown\", found string \"clutter\""},
+      {"truth_unknown_in_version_1", [](Json&, auto& s) { s[1]["detections"][1]["truth"] = "unknown"; }, 3,
+       "detections[1].truth: \"unknown\" truth needs version 2 or later; this file is version 1"},
+      {"clutter_source_on_unknown", [](Json& h, auto& s) {
+         h["version"] = 2;
+         s[1]["detections"][1]["truth"] = "unknown";
+         s[1]["detections"][1]["clutter_source"] = 1;
+       },
+       3, "detections[1].clutter_source: a clutter source needs \"truth\": \"not-a-landmark\""},
       {"truth_not_in_header", [](Json&, auto& s) { s[1]["detections"][0]["truth"] = 7; }, 3,
        "detections[0].truth: landmark 7 is not in the header's landmark_truth"},
       {"truth_negative", [](Json&, auto& s) { s[1]["detections"][0]["truth"] = -1; }, 3,
        "detections[0].truth: integer -1 is out of range"},
       {"truth_null", [](Json&, auto& s) { s[1]["detections"][0]["truth"] = nullptr; }, 3,
-       "detections[0].truth: expected a landmark id or \"not-a-landmark\", found null"},
+       "detections[0].truth: expected a landmark id, \"not-a-landmark\" or \"unknown\", found null"},
       {"clutter_source_on_a_landmark", [](Json&, auto& s) { s[1]["detections"][0]["clutter_source"] = 2; }, 3,
        "detections[0].clutter_source: a clutter source needs \"truth\": \"not-a-landmark\""},
       {"clutter_source_negative", [](Json&, auto& s) {

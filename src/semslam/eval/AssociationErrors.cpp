@@ -32,6 +32,7 @@ AssociationErrors evaluateAssociationErrors(const std::vector<DetectionAssociati
   // A true landmark's detections on each estimate that is not its own: matched to another landmark, or to none.
   std::map<std::pair<int, int>, std::size_t> onAnotherLandmarksEstimate, onUnmatchedEstimate;
   for (const DetectionAssociation& d : detections) {
+    if (d.truth == kUnknownTruth) continue;  // not scored (header comment)
     if (d.truth == kNotALandmark) {
       ++errors.clutter;
       if (!d.estimate) ++errors.clutterUnassigned;

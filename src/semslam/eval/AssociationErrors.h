@@ -2,7 +2,8 @@
 // Association errors, separated by kind: what a single accuracy number mixes. All are measured over the same
 // detections and the same estimated ↔ true landmark matching as DataAssociationAccuracy.h (LandmarkMatching.h), on
 // the detections with known truth. A detection is *real* when its truth is a landmark, *clutter* when its truth is
-// kNotALandmark; it is *assigned* when the final estimate puts it on a landmark (a detection on the null
+// kNotALandmark; a detection whose truth is kUnknownTruth is neither and enters no count, pair or ratio (docs/
+// metrics.md). It is *assigned* when the final estimate puts it on a landmark (a detection on the null
 // hypothesis, on a provisional landmark the method dropped, or rejected, is unassigned: the method reports
 // std::nullopt for it).
 //

@@ -8,6 +8,7 @@ DataAssociationAccuracy evaluateDataAssociation(const std::vector<DetectionAssoc
   DataAssociationAccuracy result;
   result.matching = matchLandmarks(detections);  // validates the truth ids
   for (const DetectionAssociation& d : detections) {
+    if (d.truth == kUnknownTruth) continue;  // not scored (header comment)
     ++result.total;
     const bool isClutter = d.truth == kNotALandmark;
     if (isClutter) ++result.clutter;

@@ -15,7 +15,9 @@
 // Hence accuracy = (Σ_matched shared detections + clutter detections given ∅) / total: it is invariant under any
 // renaming of the estimated landmarks, a landmark split in two gets credit for its larger part only, and two true
 // landmarks merged into one estimated landmark get credit for one of them.
-// Only detections with known truth enter (leave out detections whose truth id is absent from the log).
+// Only detections with known truth enter (leave out detections whose truth id is absent from the log); a
+// detection whose truth is kUnknownTruth (the dataset cannot decide: docs/metrics.md) is left out here too, so it
+// changes no count and no ratio.
 
 #include <cstddef>
 #include <limits>
@@ -35,7 +37,7 @@ struct DataAssociationAccuracy {
   LandmarkMatching matching;       ///< the estimated ↔ true landmark matching used
 };
 
-/// Evaluates the associations (see the header comment). Throws InputError for a truth id below -1.
+/// Evaluates the associations (see the header comment). Throws InputError for a truth id below -2.
 DataAssociationAccuracy evaluateDataAssociation(const std::vector<DetectionAssociation>& detections);
 
 }  // namespace semslam

@@ -35,10 +35,11 @@ LandmarkMatching matchLandmarks(const std::vector<DetectionAssociation>& detecti
   std::map<int, int> rowOf, columnOf;  // id -> index, in ascending id order once numbered
   std::map<std::pair<int, int>, std::size_t> shared;
   for (const DetectionAssociation& d : detections) {
-    if (d.truth < kNotALandmark) {
+    if (d.truth < kUnknownTruth) {
       throw InputError("landmark matching: invalid true landmark id " + std::to_string(d.truth) +
-                       " (ids are >= 0, or -1 for clutter)");
+                       " (ids are >= 0, -1 for clutter, or -2 for unknown)");
     }
+    if (d.truth == kUnknownTruth) continue;  // not scored: as if the detection had no truth
     if (d.estimate) rowOf.emplace(*d.estimate, 0);
     if (d.truth != kNotALandmark) columnOf.emplace(d.truth, 0);
     if (d.estimate && d.truth != kNotALandmark) ++shared[{*d.estimate, d.truth}];

@@ -4,7 +4,8 @@
 // RMSE, class accuracy) is measured through it, so renaming the estimated landmarks changes nothing.
 //
 // Input: per detection with ground truth, the pair (truth, estimate):
-//   truth     the true landmark id (≥ 0), or kNotALandmark (models/MeasurementLog.h) for clutter;
+//   truth     the true landmark id (≥ 0), or kNotALandmark (models/MeasurementLog.h) for clutter; kUnknownTruth
+//             (the dataset cannot decide) is accepted and left out, exactly as a detection without truth;
 //   estimate  the id of the estimated landmark the final estimate associates the detection with, or std::nullopt
 //             for the null hypothesis (the detection explains no landmark). A detection that created a landmark
 //             is associated with that landmark.
@@ -26,7 +27,7 @@ namespace semslam {
 
 /// One detection's true and estimated association (see above).
 struct DetectionAssociation {
-  int truth = kNotALandmark;    ///< true landmark id ≥ 0, or kNotALandmark for clutter
+  int truth = kNotALandmark;    ///< true landmark id ≥ 0, kNotALandmark for clutter, kUnknownTruth (left out)
   std::optional<int> estimate;  ///< estimated landmark id, or std::nullopt for the null hypothesis
 };
 
@@ -48,7 +49,7 @@ struct LandmarkMatching {
 };
 
 /// The matching of the estimated landmarks that occur in `detections` to the true landmarks that occur there.
-/// Throws InputError for a truth id below -1.
+/// Throws InputError for a truth id below -2 (kUnknownTruth).
 LandmarkMatching matchLandmarks(const std::vector<DetectionAssociation>& detections);
 
 }  // namespace semslam

@@ -136,7 +136,7 @@ ResidualAccumulator::ResidualAccumulator(const LogHeader& header) : header_(head
 
 void ResidualAccumulator::add(const TimeStep& step) {
   for (const Detection& detection : step.detections) {
-    if (!detection.truthId) {
+    if (!scoredTruth(detection.truthId)) {  // no truth, or "unknown"
       ++counts_.detectionsUnknownTruth;
       continue;
     }

@@ -42,7 +42,7 @@ struct LogResidualStatistics {
   std::vector<ComponentResidualStatistics> odometry;   ///< one per tangent component
   std::size_t detectionsEvaluated = 0;
   std::size_t detectionsClutter = 0;          ///< truth "not a landmark": nothing to predict
-  std::size_t detectionsUnknownTruth = 0;     ///< no truth, or an id that is not in landmark_truth
+  std::size_t detectionsUnknownTruth = 0;     ///< no truth, truth "unknown", or an id not in landmark_truth
   std::size_t detectionsWithoutTruePose = 0;  ///< at a step without a true pose
   std::size_t detectionsSkipped = 0;          ///< a sensor or landmark kind that is not evaluated
   std::size_t detectionsUndefined = 0;        ///< the prediction is undefined (landmark at the sensor)

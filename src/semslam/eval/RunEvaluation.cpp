@@ -133,14 +133,16 @@ RunEvaluation evaluateRun(const MeasurementLog& log, const RunResult& result, co
     }
   }
 
-  // Data association, on the detections with a truth id.
+  // Data association, on the detections with a scored truth id (a landmark or clutter; kUnknownTruth is left out
+  // as a detection without truth is: docs/metrics.md).
   bool detectionTruth = false;
   std::set<int> knowable;  // true landmarks the method could know: detected, or given as priors
   for (const TimeStep& step : log.steps) {
     for (const Detection& d : step.detections) {
-      if (!d.truthId) continue;
+      const std::optional<int> truth = scoredTruth(d.truthId);
+      if (!truth) continue;
       detectionTruth = true;
-      if (*d.truthId != kNotALandmark) knowable.insert(*d.truthId);
+      if (*truth != kNotALandmark) knowable.insert(*truth);
     }
   }
   if (!result.associations.empty()) {
@@ -153,7 +155,9 @@ RunEvaluation evaluateRun(const MeasurementLog& log, const RunResult& result, co
                          " detections but " + std::to_string(associated.size()) + " associations");
       }
       for (std::size_t j = 0; j < detections.size(); ++j) {
-        if (detections[j].truthId) pairs.push_back({*detections[j].truthId, associated[j]});
+        if (const std::optional<int> truth = scoredTruth(detections[j].truthId)) {
+          pairs.push_back({*truth, associated[j]});
+        }
       }
     }
     if (!pairs.empty()) {

@@ -34,8 +34,11 @@
 namespace semslam {
 
 inline constexpr std::string_view kMeasurementLogFormat = "semslam-log";
-/// The version this code writes, and the newest it reads.
-inline constexpr int kMeasurementLogVersion = 1;
+/// The version this code writes, and the newest it reads. Version 2 added the detection truth "unknown"
+/// (kUnknownTruth) (docs/measurement-log.md, "Versioning").
+inline constexpr int kMeasurementLogVersion = 2;
+/// The first version whose detections may have "truth": "unknown".
+inline constexpr int kUnknownTruthVersion = 2;
 
 /// Reads and validates a whole log. Throws InputError(path, line, problem).
 MeasurementLog readMeasurementLog(const std::string& path);

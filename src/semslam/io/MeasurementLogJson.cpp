@@ -532,15 +532,22 @@ Detection StepParser::parseDetection(const JsonField& field) const {
 
   if (field.has("truth")) {
     const JsonField truth = field["truth"];
+    const std::string expected = "expected a landmark id, \"not-a-landmark\" or \"unknown\", found ";
     if (truth.json().is_string()) {
-      if (truth.string() != "not-a-landmark") {
-        truth.fail("expected a landmark id or \"not-a-landmark\", found " + describeJson(truth.json()));
+      const std::string kind = truth.string();
+      if (kind == "not-a-landmark") {
+        detection.truthId = kNotALandmark;
+      } else if (kind == "unknown") {
+        if (header_.version < kUnknownTruthVersion) {
+          truth.fail("\"unknown\" truth needs version " + std::to_string(kUnknownTruthVersion) +
+                     " or later; this file is version " + std::to_string(header_.version));
+        }
+        detection.truthId = kUnknownTruth;
+      } else {
+        truth.fail(expected + describeJson(truth.json()));
       }
-      detection.truthId = kNotALandmark;
     } else {
-      if (!truth.json().is_number()) {
-        truth.fail("expected a landmark id or \"not-a-landmark\", found " + describeJson(truth.json()));
-      }
+      if (!truth.json().is_number()) truth.fail(expected + describeJson(truth.json()));
       const int id = landmarkId(truth);
       if (!truthIds_.empty() && !truthIds_.contains(id)) {
         truth.fail("landmark " + std::to_string(id) + " is not in the header's landmark_truth");
@@ -613,6 +620,8 @@ Json stepToJson(const TimeStep& step, SemanticKind semantic) {
       if (*detection.truthId == kNotALandmark) {
         item["truth"] = "not-a-landmark";
         if (detection.clutterSource) item["clutter_source"] = *detection.clutterSource;
+      } else if (*detection.truthId == kUnknownTruth) {
+        item["truth"] = "unknown";
       } else {
         item["truth"] = *detection.truthId;
       }

@@ -66,6 +66,7 @@ MeasurementLogSummary summarizeMeasurementLog(const std::string& path, bool resi
       if (!detection.truthId) continue;
       ++summary.withTruth;
       if (*detection.truthId == kNotALandmark) ++summary.clutter;
+      if (*detection.truthId == kUnknownTruth) ++summary.unknownTruth;
     }
     if (step.truePose) ++summary.truePoses;
     if (step.odometry) ++summary.withOdometry;
@@ -89,10 +90,10 @@ std::string formatMeasurementLogSummary(const MeasurementLogSummary& s) {
   text += format("duration:      %.6g s (time %.17g to %.17g)\n", s.lastTime - s.firstTime, s.firstTime, s.lastTime);
   text += format("detections:    %zu; per step min %zu, mean %.4g, max %zu\n", s.detections, s.minPerStep,
                  static_cast<double>(s.detections) / static_cast<double>(s.steps), s.maxPerStep);
-  text += format("ground truth:  %zu landmarks; %zu detections with truth (%zu of a landmark, %zu clutter), %zu "
-                 "without\n",
-                 header.landmarkTruth.size(), s.withTruth, s.withTruth - s.clutter, s.clutter,
-                 s.detections - s.withTruth);
+  text += format("ground truth:  %zu landmarks; %zu detections with truth (%zu of a landmark, %zu clutter, %zu "
+                 "unknown), %zu without\n",
+                 header.landmarkTruth.size(), s.withTruth, s.withTruth - s.clutter - s.unknownTruth, s.clutter,
+                 s.unknownTruth, s.detections - s.withTruth);
   text += format("priors:        initial pose %s; %zu landmark priors\n", header.initialPose ? "yes" : "no",
                  header.landmarkPriors.size());
   if (!header.source.empty()) text += format("source:        %s\n", header.source.c_str());

@@ -24,6 +24,7 @@ struct MeasurementLogSummary {
   std::size_t maxPerStep = 0;
   std::size_t withTruth = 0;  ///< detections with a truth id (a landmark's, or clutter)
   std::size_t clutter = 0;
+  std::size_t unknownTruth = 0;  ///< of withTruth: truth "unknown" (neither a landmark nor clutter)
   std::size_t truePoses = 0;
   std::size_t withOdometry = 0;
   double firstTime = 0.0;

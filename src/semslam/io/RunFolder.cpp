@@ -14,7 +14,9 @@ namespace {
 
 std::string truthField(const std::optional<int>& truth) {
   if (!truth) return "";
-  return *truth == kNotALandmark ? "not-a-landmark" : std::to_string(*truth);
+  if (*truth == kNotALandmark) return "not-a-landmark";
+  if (*truth == kUnknownTruth) return "unknown";
+  return std::to_string(*truth);
 }
 
 void writePositionColumns(std::ostream& out, const Vector& position) {

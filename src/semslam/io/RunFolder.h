@@ -9,8 +9,9 @@
 //   covariances.csv        `kind,id,cxx,cxy,cyy`: the position block of each pose's (kind `pose`, id = its index
 //                          in trajectory.tum) and landmark's marginal covariance, for covariance ellipses
 //   associations.csv       `step,detection,landmark,weight,truth,chi2` (landmark `null` for the null hypothesis,
-//                          truth `not-a-landmark` for clutter, empty where unknown; chi2 = rᵀR⁻¹r of the detection
-//                          against its landmark at the final estimate, empty without a landmark)
+//                          truth `not-a-landmark` for clutter, `unknown` where the dataset cannot decide, empty
+//                          where the log has no truth; chi2 = rᵀR⁻¹r of the detection against its landmark at the
+//                          final estimate, empty without a landmark)
 // metrics.json is written by io/RunMetricsFile.h. Every file is written atomically (io/AtomicFile.h); a file whose
 // data is empty (no truth, no associations) is not written.
 

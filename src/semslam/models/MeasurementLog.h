@@ -9,7 +9,10 @@
 // Conventions: poses are SE2 (dimension 2) or SE3 (dimension 3); covariances are in the tangent of the right
 // perturbation, translation first; angles in radians, lengths in metres, time in seconds. Landmark ids are the
 // log's own non-negative integers; a detection's true landmark id is kNotALandmark for clutter (false positives,
-// other robots, unknown markers).
+// other robots, unknown markers), or kUnknownTruth where the dataset's ground truth cannot say which (docs/
+// measurement-log.md, "Detections": e.g. a KITTI detection inside a DontCare region, or of an object that moves a
+// little); absent means the log carries no truth for it. Metrics score only a landmark id or kNotALandmark
+// (scoredTruth below).
 
 #include <optional>
 #include <string>
@@ -25,7 +28,11 @@ using Pose = std::variant<SE2, SE3>;
 /// A landmark is a point (Point2/Point3) or, for objects with an orientation, a pose (SE2/SE3).
 using LandmarkState = std::variant<Point2, Point3, SE2, SE3>;
 
+/// Truth of clutter: a false positive, another robot, a moving object (file: "not-a-landmark").
 inline constexpr int kNotALandmark = -1;
+/// Truth that the dataset's labels cannot decide (file: "unknown", version 2): neither a landmark nor clutter for
+/// scoring; every metric leaves such a detection out, exactly as one without truth (docs/metrics.md).
+inline constexpr int kUnknownTruth = -2;
 
 /// What a detection's geometric part measures (and hence its length).
 enum class SensorKind {
@@ -100,7 +107,8 @@ struct Detection {
   Matrix covariance;               // of the geometry (RelativePose: of its tangent)
   std::optional<int> label;        // SemanticKind::Label
   std::optional<Vector> classVector;  // SemanticKind::Probabilities or Scores (length classes)
-  std::optional<int> truthId;      // a landmark id, kNotALandmark for clutter, or absent when unknown
+  std::optional<int> truthId;      // a landmark id, kNotALandmark for clutter, kUnknownTruth where the dataset
+                                   // cannot decide, or absent when the log has no truth for it
   std::optional<int> clutterSource;  // clutter only: which non-landmark object produced it, where the dataset
                                      // knows (e.g. MRCLAM's other robots), ≥ 0; ground truth, never method input
 };
@@ -116,5 +124,12 @@ struct MeasurementLog {
   LogHeader header;
   std::vector<TimeStep> steps;
 };
+
+/// The truth a metric scores: a landmark id or kNotALandmark; std::nullopt for a detection without truth and for
+/// kUnknownTruth, which every metric leaves out alike.
+inline std::optional<int> scoredTruth(const std::optional<int>& truth) {
+  if (!truth || *truth == kUnknownTruth) return std::nullopt;
+  return truth;
+}
 
 }  // namespace semslam

@@ -27,7 +27,7 @@ struct AssociationRecord {
   int detection = 0;
   std::optional<int> landmark;   // nullopt: the null hypothesis
   double weight = 1.0;
-  std::optional<int> truth;      // a landmark id, kNotALandmark for clutter, nullopt when unknown
+  std::optional<int> truth;      // a landmark id, kNotALandmark for clutter, kUnknownTruth, nullopt when absent
   /// rᵀ R⁻¹ r of the detection against its landmark at the final estimate (R: the detection's own covariance,
   /// no state uncertainty): the consistency of the decision with the map. nullopt: no landmark, or a method that
   /// does not report it (the hybrid belief).

@@ -220,7 +220,7 @@ void SemanticSlam::addStep(const TimeStep& step) {
     const Value& robot = values.exists(pose) ? values.value(pose) : smoother_->estimate().value(pose);
 
     if (known) {
-      if (record.truth && *record.truth != kNotALandmark) {
+      if (scoredTruth(record.truth) && *record.truth != kNotALandmark) {  // clutter and "unknown": no factor
         const auto found = landmarkOfTruthId_.find(*record.truth);
         int index = 0;
         if (found != landmarkOfTruthId_.end()) {

@@ -96,9 +96,10 @@ MeasurementLog redrawLabels(const MeasurementLog& log, double misclassification,
   out.header.classifier.misclassification = p;
   for (std::size_t k = 0; k < out.steps.size(); ++k) {
     for (Detection& detection : out.steps[k].detections) {
-      if (!detection.truthId) {
+      if (!scoredTruth(detection.truthId)) {
         throw std::invalid_argument("labels: step " + std::to_string(k) +
-                                    ": a detection without a truth id (the true class is unknown)");
+                                    ": a detection without a truth id or with truth \"unknown\" (the true class "
+                                    "is unknown)");
       }
       const double u1 = uniform01(rng), u2 = uniform01(rng);
       int label;

@@ -59,7 +59,7 @@ void assignClassLabels(MeasurementLog& log, int classes, double misclassificatio
         detection.label = model.sampleLabel(classOfLandmark(*detection.truthId, classes), rng);
       } else if (clutterLabels == ClutterLabels::PerSource && detection.clutterSource) {
         detection.label = model.sampleLabel(*detection.clutterSource % classes, rng);
-      } else if (!detection.truthId || *detection.truthId == kNotALandmark) {
+      } else if (!detection.truthId || *detection.truthId == kNotALandmark || *detection.truthId == kUnknownTruth) {
         const int label = static_cast<int>(uniform01(rng) * classes);
         detection.label = label < classes ? label : classes - 1;
       } else {

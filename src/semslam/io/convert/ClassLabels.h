@@ -7,7 +7,7 @@
 // a step in detection order; every draw consumes exactly two engine outputs (Sampling.h's uniform01), so the same
 // seed gives the same labels on every platform and a log's first N steps get the same labels whatever follows them.
 //   - a detection of landmark l:            label ~ row (l mod M) of C = (1 − p) I + p/(M − 1)(11ᵀ − I);
-//   - clutter (truth "not a landmark") or a detection of unknown truth, ClutterLabels::Uniform: label uniform on
+//   - clutter (truth "not a landmark") or a detection of unknown truth (absent, or kUnknownTruth), ClutterLabels::Uniform: label uniform on
 //     [0, M) (clutter has no class: a uniform label carries no information about it, as a null hypothesis expects);
 //   - clutter with a known source s (Detection::clutterSource), ClutterLabels::PerSource: label ~ row (s mod M) of
 //     C, as a real detector labels a robot it sees: one class per object, wrong at rate p. Clutter without a source

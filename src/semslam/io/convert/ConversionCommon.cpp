@@ -100,7 +100,12 @@ MeasurementLog finishConversion(MeasurementLog raw, const ConvertOptions& option
   counts.detectionsDroppedByMaxSteps = keepFirstSteps(log.steps, options.maxSteps);
   counts.stepsDroppedByMaxSteps = before - log.steps.size();
 
-  assignClassLabels(log, options.classes, options.misclassification, options.seed, options.clutterLabels);
+  if (log.header.semantic == SemanticKind::None) {
+    assignClassLabels(log, options.classes, options.misclassification, options.seed, options.clutterLabels);
+  } else if (options.classes != 1 || options.misclassification != 0.0) {
+    // The dataset's own labels (kitti-tracking: the detector's class) are kept as they are.
+    throw InputError("--classes and --misclassification do not apply: this dataset has its own class labels");
+  }
 
   // Priors.
   const int tangent = dimension == 3 ? 6 : 3;
@@ -142,6 +147,7 @@ MeasurementLog finishConversion(MeasurementLog raw, const ConvertOptions& option
     if (step.truePose) ++counts.truePoses;
     for (const Detection& detection : step.detections) {
       if (detection.truthId && *detection.truthId == kNotALandmark) ++counts.clutter;
+      if (detection.truthId && *detection.truthId == kUnknownTruth) ++counts.unknownTruth;
     }
   }
 
@@ -158,7 +164,9 @@ MeasurementLog finishConversion(MeasurementLog raw, const ConvertOptions& option
            << counts.detectionsDroppedByMaxSteps << " detections";
   }
   source << "; written " << counts.steps << " steps, " << counts.detections << " detections (" << counts.clutter
-         << " clutter)";
+         << " clutter";
+  if (counts.unknownTruth > 0) source << ", " << counts.unknownTruth << " unknown";
+  source << ")";
   log.header.source = source.str();
   if (stats != nullptr) *stats = counts;
   return log;

@@ -40,7 +40,9 @@ std::optional<std::size_t> findStep(const std::vector<TimeStep>& steps, double t
 /// diag(values) as a covariance.
 Matrix diagonalCovariance(const std::vector<double>& values);
 
-/// The common tail of a conversion: validates `options`, keyframes, truncates, assigns labels and classes, sets
+/// The common tail of a conversion: validates `options`, keyframes, truncates, assigns labels and classes (unless
+/// `raw`'s header already has a semantic kind: then the dataset's own labels stay, and --classes or
+/// --misclassification is an InputError), sets
 /// the initial pose prior (at the first step's true pose, or the identity when it has none) and the map prior, and
 /// appends the settings and counts to the header's source text. `raw` holds every step and detection of the
 /// dataset, its header the dimension, sensor, landmark truth and a description of the dataset in `source`.

@@ -12,14 +12,36 @@
 //      (ClassLabels.h), the initial pose prior and, with mapPriorSigma > 0, the landmark ground truth as a prior map.
 // Identities go only into the ground truth (`truth`), never into the input a method reads.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "semslam/io/convert/ClassLabels.h"
 
 namespace semslam {
+
+/// KITTI tracking (KittiTrackingConverter.h): the settings only it reads.
+struct KittiTrackingOptions {
+  /// The sequence number (label_02/NNNN.txt); required (−1: not given).
+  int sequence = -1;
+  /// Detections with a score below the threshold of their class (Car, Pedestrian, Cyclist) are dropped;
+  /// std::nullopt: the class's default (KittiTrackingConverter.h).
+  std::array<std::optional<double>, 3> scoreThresholds;
+  /// Odometry: ORB-SLAM3's relative motion with its stated covariance, or that plus seeded Gaussian noise.
+  enum class Odometry { OrbSlam, Noisy } odometry = Odometry::OrbSlam;
+  /// Noisy odometry: the noise is K times the stated ORB-SLAM3 standard deviations (std::nullopt: 1).
+  std::optional<double> odometryNoiseScale;
+  /// > 0: detections farther than this (metres) are dropped, and the sensor's max_range is set to it.
+  double maxRange = 0.0;
+  /// A 3x3 table of counts (rows: true Car, Pedestrian, Cyclist; columns: detected) from which the categorical
+  /// misclassification rate is estimated instead of from this sequence's own matches; empty: the sequence's own.
+  std::string confusionFile;
+  /// Non-empty: write every kept detection with its match and residual to this CSV (for the σ(r) fit).
+  std::string matchesOut;
+};
 
 struct ConvertOptions {
   /// M, the number of classes. 1: no semantic part (header semantic "none", classifier "none").
@@ -28,7 +50,8 @@ struct ConvertOptions {
   double misclassification = 0.0;
   /// How clutter detections are labelled (ClassLabels.h): uniform, or one class per known source.
   ClutterLabels clutterLabels = ClutterLabels::Uniform;
-  /// Seeds the std::mt19937 that draws the labels (and nothing else).
+  /// Seeds the std::mt19937 that draws the labels (and, for kitti-tracking, which has its own labels, the noise of
+  /// `--odometry noisy`).
   std::uint32_t seed = 1;
   /// Keep one step per period (seconds); 0 keeps every step.
   double keyframePeriod = 0.0;
@@ -41,6 +64,8 @@ struct ConvertOptions {
   double mapPriorSigma = 0.0;
   /// MRCLAM: the robot (1..5) whose odometry and measurements are converted.
   int robot = 1;
+  /// KITTI tracking only.
+  KittiTrackingOptions kitti;
 };
 
 /// The default standard deviation of every component of the initial pose prior (metres or radians).
@@ -53,12 +78,16 @@ struct ConversionStats {
   std::size_t steps = 0;              ///< steps written
   std::size_t detections = 0;         ///< detections written
   std::size_t clutter = 0;            ///< detections written whose truth is "not a landmark"
+  std::size_t unknownTruth = 0;       ///< detections written whose truth is "unknown" (kUnknownTruth)
   std::size_t truePoses = 0;          ///< steps written with a true pose
   std::size_t landmarks = 0;          ///< landmarks in the ground truth
   std::size_t stepsDroppedByKeyframing = 0;
   std::size_t detectionsDroppedByKeyframing = 0;
   std::size_t stepsDroppedByMaxSteps = 0;
   std::size_t detectionsDroppedByMaxSteps = 0;
+  /// Dataset-specific lines for the terminal (kitti-tracking: the detections of each truth kind, the confusion
+  /// counts), one per entry.
+  std::vector<std::string> notes;
 };
 
 /// Throws InputError naming the option when `options` is out of range for a log of `dimension` (2 or 3).

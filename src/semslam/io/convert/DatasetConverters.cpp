@@ -5,7 +5,8 @@
 namespace semslam {
 
 const std::vector<std::string>& datasetKinds() {
-  static const std::vector<std::string> kinds = {"utias-lost-in-the-woods", "utias-starry-night", "mrclam", "isam"};
+  static const std::vector<std::string> kinds = {"utias-lost-in-the-woods", "utias-starry-night", "mrclam", "isam",
+                                                   "kitti-tracking"};
   return kinds;
 }
 
@@ -15,6 +16,7 @@ MeasurementLog convertDataset(const std::string& kind, const std::string& path, 
   if (kind == "utias-starry-night") return convertStarryNight(path, options, stats);
   if (kind == "mrclam") return convertMrclam(path, options, stats);
   if (kind == "isam") return convertIsam(path, options, stats);
+  if (kind == "kitti-tracking") return convertKittiTracking(path, options, stats);
   std::string known;
   for (const std::string& name : datasetKinds()) known += (known.empty() ? "" : ", ") + name;
   throw InputError("unknown dataset kind '" + kind + "' (known: " + known + ")");

@@ -4,6 +4,7 @@
 //   utias-starry-night       PATH = the dataset folder          (StarryNightConverter.h)
 //   mrclam                   PATH = a MRCLAM_DatasetN folder     (MrclamConverter.h; ConvertOptions::robot)
 //   isam                     PATH = a cityTrees10000-style file  (IsamConverter.h)
+//   kitti-tracking           PATH = the kitti-tracking folder     (KittiTrackingConverter.h; ConvertOptions::kitti)
 // docs/datasets.md describes each one's frames, units, noise values and decisions.
 
 #include <string>
@@ -11,6 +12,7 @@
 
 #include "semslam/io/convert/ConvertOptions.h"
 #include "semslam/io/convert/IsamConverter.h"
+#include "semslam/io/convert/KittiTrackingConverter.h"
 #include "semslam/io/convert/LostInTheWoodsConverter.h"
 #include "semslam/io/convert/MrclamConverter.h"
 #include "semslam/io/convert/StarryNightConverter.h"
