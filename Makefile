@@ -9,7 +9,7 @@
 #   make results  regenerate the measured results in docs/results.md
 #   make install  build, then install under PREFIX (default /usr/local; sudo only when PREFIX is not writable):
 #                 bin/semslam, include/semslam, lib/libsemslam.a, lib/cmake/semslam (find_package(semslam)),
-#                 lib/pkgconfig/semslam.pc, share/semslam/python (the plotting scripts)
+#                 lib/pkgconfig/semslam.pc, share/semslam/python (the plotting scripts), share/doc/semslam
 
 BUILD_DIR ?= build
 PREFIX ?= /usr/local

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The install, as a user gets it: installs the already built semslam (nothing is rebuilt) into a temporary prefix,
 # checks that everything landed under that prefix and nowhere else (CLI, headers, CMake package, semslam.pc,
-# plotting scripts), then builds and runs the same tiny consumer
+# plotting scripts, licence and citation), then builds and runs the same tiny consumer
 # (tests/packaging/consumer/main.cpp) twice: with CMake's find_package(semslam) and with
 # `pkg-config --cflags --libs semslam`.
 # Usage: install_and_consume.sh BUILD_DIR SOURCE_DIR VERSION
@@ -21,7 +21,7 @@ outside=$(grep -v "^$prefix/" "$build_dir/install_manifest.txt" || true)
 for file in bin/semslam include/semslam/solve/Optimizer.h include/semslam/core/Version.h \
             lib/cmake/semslam/semslamConfig.cmake lib/cmake/semslam/semslamConfigVersion.cmake \
             lib/cmake/semslam/FindCHOLMOD.cmake lib/pkgconfig/semslam.pc share/semslam/python/plot_run.py \
-            share/semslam/python/plot_methods.py; do
+            share/semslam/python/plot_methods.py share/doc/semslam/LICENSE share/doc/semslam/CITATION.cff; do
   [ -e "$prefix/$file" ] || fail "$file was not installed"
 done
 [ -x "$prefix/share/semslam/python/plot_run.py" ] || fail "the plotting scripts are not executable"
