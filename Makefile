@@ -56,7 +56,8 @@ demo: build
 	$(PYTHON) python/plot_run.py $(BUILD_DIR)/demo --title "semslam demo: paper B's mm-nh among look-alike landmarks"
 
 bench: deps-bench
-	cmake -S . -B $(BUILD_DIR)-bench -DCMAKE_BUILD_TYPE=Release -DSEMSLAM_BUILD_TESTS=OFF -DSEMSLAM_BUILD_BENCH=ON
+	cmake -S . -B $(BUILD_DIR)-bench -DCMAKE_BUILD_TYPE=Release -DSEMSLAM_BUILD_TESTS=OFF -DSEMSLAM_BUILD_BENCH=ON \
+	  -DSEMSLAM_BUILD_EXAMPLES=OFF
 	cmake --build $(BUILD_DIR)-bench -j $(JOBS)
 	$(BUILD_DIR)-bench/bin/semslam_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 	$(BUILD_DIR)-bench/bin/semslam_incremental_bench
