@@ -7,8 +7,12 @@
 #   make bench    build and run the benchmarks (installs libceres-dev for the Ceres comparison), then the
 #                 incremental replay benchmark and the candidate pre-selection benchmark
 #   make results  regenerate the measured results in docs/results.md
+#   make install  build, then install under PREFIX (default /usr/local; sudo only when PREFIX is not writable):
+#                 bin/semslam, include/semslam, lib/libsemslam.a, lib/cmake/semslam (find_package(semslam)),
+#                 lib/pkgconfig/semslam.pc, share/semslam/python (the plotting scripts), share/doc/semslam
 
 BUILD_DIR ?= build
+PREFIX ?= /usr/local
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 # Debian's interpreter, where python3-matplotlib is installed.
 PYTHON ?= /usr/bin/python3
@@ -30,7 +34,7 @@ define install_missing
 	fi
 endef
 
-.PHONY: deps deps-bench configure build test demo bench results clean
+.PHONY: deps deps-bench configure build test demo bench results install clean
 
 deps:
 	$(call install_missing,$(DEB_PACKAGES))
@@ -52,7 +56,8 @@ demo: build
 	$(PYTHON) python/plot_run.py $(BUILD_DIR)/demo --title "semslam demo: paper B's mm-nh among look-alike landmarks"
 
 bench: deps-bench
-	cmake -S . -B $(BUILD_DIR)-bench -DCMAKE_BUILD_TYPE=Release -DSEMSLAM_BUILD_TESTS=OFF -DSEMSLAM_BUILD_BENCH=ON
+	cmake -S . -B $(BUILD_DIR)-bench -DCMAKE_BUILD_TYPE=Release -DSEMSLAM_BUILD_TESTS=OFF -DSEMSLAM_BUILD_BENCH=ON \
+	  -DSEMSLAM_BUILD_EXAMPLES=OFF
 	cmake --build $(BUILD_DIR)-bench -j $(JOBS)
 	$(BUILD_DIR)-bench/bin/semslam_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 	$(BUILD_DIR)-bench/bin/semslam_incremental_bench
@@ -60,6 +65,14 @@ bench: deps-bench
 
 results: build
 	$(PYTHON) python/make_results.py --build $(BUILD_DIR)
+
+# Installs what `make build` built (nothing is rebuilt as root). sudo is used only when the nearest existing folder
+# of PREFIX is not writable, so `make install PREFIX=$HOME/.local` needs no root.
+install: build
+	@dir="$(PREFIX)"; while [ ! -e "$$dir" ]; do dir=$$(dirname "$$dir"); done; \
+	if [ -w "$$dir" ]; then sudo=""; else sudo="$(SUDO)"; fi; \
+	echo "$$sudo cmake --install $(BUILD_DIR) --prefix $(PREFIX)"; \
+	$$sudo cmake --install $(BUILD_DIR) --prefix "$(PREFIX)"
 
 clean:
 	rm -rf $(BUILD_DIR) $(BUILD_DIR)-bench

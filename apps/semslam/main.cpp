@@ -2,14 +2,18 @@
 
 #include <exception>
 #include <iostream>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "Commands.h"
 #include "semslam/core/InputError.h"
+#include "semslam/core/Version.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"semslam: SLAM with ambiguous data association (hybrid belief and semantic max-mixtures)"};
+  // `semslam --version` prints "semslam 0.1.0" (the CMake project VERSION) and exits 0, with no subcommand.
+  app.set_version_flag("--version", "semslam " + std::string(semslam::version()));
   app.require_subcommand(1);
   semslam::cli::addOptimizeCommand(app);
   semslam::cli::addDemoCommand(app);

@@ -8,6 +8,7 @@
 
 #include "support/RunCommand.h"
 #include "support/TestData.h"
+#include "semslam/core/Version.h"
 
 using semslam::test::runSemslam;
 
@@ -56,6 +57,7 @@ TEST(OptimizeCommand, WritesReportMarginalsAndGraph) {
     EXPECT_TRUE(report.contains(field)) << field;
   }
   EXPECT_LT(report["final_chi2"].get<double>(), report["initial_chi2"].get<double>());
+  EXPECT_EQ(report["version"], std::string(semslam::version()));
   EXPECT_EQ(report["joint_marginal"]["keys"], nlohmann::json::array({"2", "1"}));
   EXPECT_EQ(report["joint_marginal"]["matrix"].size(), 6u);
   EXPECT_EQ(report["marginals"]["2"].size(), 3u);

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "semslam/core/Version.h"
 #include "support/TempFile.h"
 #include "support/TestData.h"
 
@@ -71,6 +72,7 @@ TEST(EvalCli, PrintsStatisticsLikeEvoAndJson) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
   EXPECT_EQ(j.at("pairs").get<int>(), 4);
+  EXPECT_EQ(j.at("version"), std::string(version()));
 
   const CommandResult rpe = runCli("eval rpe --json --est " + quoted(est.path()) + " --ref " + quoted(ref.path()) +
                                    " --delta 1 --delta-unit frames");

@@ -15,6 +15,7 @@
 #include "semslam/eval/RunEvaluation.h"
 #include "semslam/eval/RunMetrics.h"
 #include "semslam/core/InputError.h"
+#include "semslam/core/Version.h"
 
 namespace semslam {
 namespace {
@@ -79,6 +80,7 @@ TEST(RunMetrics, KeysInTheDocumentedOrder) {
     EXPECT_TRUE(json.contains(required)) << required;
   }
   EXPECT_EQ(json["schema"], "semslam.metrics/1");
+  EXPECT_EQ(json["version"], std::string(version()));  // the release that wrote the file
 }
 
 TEST(RunMetrics, FieldsThatDoNotApplyAreNull) {

@@ -1,15 +1,42 @@
 #!/usr/bin/env bash
-# Installs the built semslam into a temporary prefix, then configures, builds and runs the consumer project
-# against it with find_package(semslam). Usage: install_and_consume.sh BUILD_DIR SOURCE_DIR
+# The install, as a user gets it: installs the already built semslam (nothing is rebuilt) into a temporary prefix,
+# checks that everything landed under that prefix and nowhere else (CLI, headers, CMake package, semslam.pc,
+# plotting scripts, licence and citation), then builds and runs the same tiny consumer
+# (tests/packaging/consumer/main.cpp) twice: with CMake's find_package(semslam) and with
+# `pkg-config --cflags --libs semslam`.
+# Usage: install_and_consume.sh BUILD_DIR SOURCE_DIR VERSION
 set -euo pipefail
 build_dir=$1
 source_dir=$2
+version=$3
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-cmake --install "$build_dir" --prefix "$work/prefix" > "$work/install.log"
-test -x "$work/prefix/bin/semslam" || { echo "the CLI was not installed"; exit 1; }
-test -f "$work/prefix/include/semslam/solve/Optimizer.h" || { echo "headers were not installed"; exit 1; }
-cmake -S "$source_dir/tests/packaging/consumer" -B "$work/consumer" -DCMAKE_BUILD_TYPE=Release \
-  -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log" || { cat "$work/configure.log"; exit 1; }
-cmake --build "$work/consumer" > "$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
-"$work/consumer/consumer"
+prefix="$work/prefix"
+fail() { echo "install test: $*" >&2; exit 1; }
+
+cmake --install "$build_dir" --prefix "$prefix" > "$work/install.log" || { cat "$work/install.log"; exit 1; }
+# Under PREFIX only: every installed file (cmake's manifest of this install) lies inside the prefix.
+outside=$(grep -v "^$prefix/" "$build_dir/install_manifest.txt" || true)
+[ -z "$outside" ] || fail "installed outside the prefix: $outside"
+for file in bin/semslam include/semslam/solve/Optimizer.h include/semslam/core/Version.h \
+            lib/cmake/semslam/semslamConfig.cmake lib/cmake/semslam/semslamConfigVersion.cmake \
+            lib/cmake/semslam/FindCHOLMOD.cmake lib/pkgconfig/semslam.pc share/semslam/python/plot_run.py \
+            share/semslam/python/plot_methods.py share/doc/semslam/LICENSE share/doc/semslam/CITATION.cff; do
+  [ -e "$prefix/$file" ] || fail "$file was not installed"
+done
+[ -x "$prefix/share/semslam/python/plot_run.py" ] || fail "the plotting scripts are not executable"
+[ "$("$prefix/bin/semslam" --version)" = "semslam $version" ] || fail "the installed CLI does not print $version"
+
+# 1. CMake: find_package(semslam) finds semslam and its dependencies.
+cmake -S "$source_dir/tests/packaging/consumer" -B "$work/cmake-consumer" -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$prefix" > "$work/configure.log" 2>&1 || { cat "$work/configure.log"; exit 1; }
+cmake --build "$work/cmake-consumer" > "$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
+"$work/cmake-consumer/consumer" "$version"
+
+# 2. pkg-config: the flags alone build the same program.
+export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
+[ "$(pkg-config --modversion semslam)" = "$version" ] || fail "semslam.pc does not say version $version"
+flags=$(pkg-config --cflags --libs semslam) || fail "pkg-config cannot resolve semslam.pc"
+"${CXX:-c++}" -std=c++20 -O1 "$source_dir/tests/packaging/consumer/main.cpp" $flags -o "$work/pkg-config-consumer" \
+  > "$work/pkg-build.log" 2>&1 || { echo "c++ ... $flags"; cat "$work/pkg-build.log"; exit 1; }
+"$work/pkg-config-consumer" "$version"

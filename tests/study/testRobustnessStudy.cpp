@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "semslam/core/Version.h"
 #include "semslam/study/RobustnessStudy.h"
 #include "study/StudyTesting.h"
 #include "support/RunCommand.h"
@@ -163,6 +164,7 @@ TEST(StudyCommand, SmallRunWritesItsFilesAndBadInputExitsTwo) {
   EXPECT_FALSE(test::fileBytes(out + "/robustness_summary.csv").empty());
   const nlohmann::json settings = nlohmann::json::parse(test::fileBytes(out + "/study.json"));
   EXPECT_EQ(settings["schema"], "semslam.study.robustness/1");
+  EXPECT_EQ(settings["version"], std::string(semslam::version()));
   EXPECT_EQ(settings["methods"], "known,mm");
   EXPECT_EQ(settings["runs"], 6);
   EXPECT_DOUBLE_EQ(settings["null_weight"].get<double>(), 0.2);  // the shared option block (MethodOptions.h)

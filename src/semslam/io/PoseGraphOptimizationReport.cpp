@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "semslam/core/Version.h"
 #include "semslam/io/AtomicFile.h"
 
 namespace semslam {
@@ -68,6 +69,7 @@ std::string poseGraphReportJson(const PoseGraphOptimizationReport& report) {
   json["initial_chi2"] = report.initialChi2;
   json["final_chi2"] = report.finalChi2;
   json["time_s"] = report.seconds;
+  json["version"] = std::string(version());
   if (report.replay) {
     addReplay(*report.replay, report.result, json);
   } else {

@@ -2,7 +2,8 @@
 // PoseGraphOptimizationReport: what `semslam optimize` reports about one pose-graph file, a batch solve or an
 // incremental replay (run/PoseGraphOptimization.h computes it), and its JSON file (`--report`), whose keys are:
 //   both         file, format, solver (gn | lm | incremental), variables, edges, initial_chi2, final_chi2, time_s
-//                (chi2 over the file's own edges: the anchoring prior excluded)
+//                (chi2 over the file's own edges: the anchoring prior excluded), version (the semslam release,
+//                core/Version.h)
 //   batch        iterations, converged, stop_reason, initial_gradient_norm, final_gradient_norm
 //   incremental  steps, replay_time_s, worst_step_time_s, worst_step, final_convergence,
 //                final_convergence_time_s, final_convergence_iterations, relinearize_threshold, relinearize_skip,

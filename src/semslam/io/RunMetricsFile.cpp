@@ -8,6 +8,7 @@
 
 #include "semslam/io/AtomicFile.h"
 #include "semslam/core/InputError.h"
+#include "semslam/core/Version.h"
 
 namespace semslam {
 namespace {
@@ -23,7 +24,7 @@ struct Field {
   std::variant<NumberField, CountField, TextField> member;
 };
 
-// The one table of the schema: file order, key, member. "schema" is written before these.
+// The one table of the schema: file order, key, member. "schema" and "version" are written before these.
 const std::vector<Field>& fields() {
   static const std::vector<Field> table = {
       {"method", &RunMetrics::method},
@@ -126,7 +127,7 @@ void fromJsonValue(RunMetrics& metrics, const Field& field, const Json& value, c
 
 const std::vector<std::string>& runMetricsKeys() {
   static const std::vector<std::string> keys = [] {
-    std::vector<std::string> k{"schema"};
+    std::vector<std::string> k{"schema", "version"};
     for (const Field& field : fields()) k.emplace_back(field.key);
     return k;
   }();
@@ -136,6 +137,7 @@ const std::vector<std::string>& runMetricsKeys() {
 std::string runMetricsToJson(const RunMetrics& metrics) {
   Json json = Json::object();
   json["schema"] = std::string(kRunMetricsSchema);
+  json["version"] = std::string(version());
   for (const Field& field : fields()) json[field.key] = toJsonValue(metrics, field);
   return json.dump(2) + "\n";
 }

@@ -3,8 +3,9 @@
 //
 // File: one JSON object, keys in the fixed order of runMetricsKeys() (the order of docs/metrics.md), two-space
 // indentation, numbers in shortest round-trip form (reading gives back the same doubles bit for bit). Written
-// atomically (io/AtomicFile.h). Reading requires "schema": "semslam.metrics/1", accepts a missing known key as
-// null and ignores unknown keys; a known key of the wrong type throws InputError(file, 0, problem).
+// atomically (io/AtomicFile.h). "version" (second) is the semslam release that wrote the file (core/Version.h); it
+// is not part of RunMetrics and reading skips it. Reading requires "schema": "semslam.metrics/1", accepts a missing
+// known key as null and ignores unknown keys; a known key of the wrong type throws InputError(file, 0, problem).
 
 #include <string>
 #include <string_view>
@@ -16,7 +17,7 @@ namespace semslam {
 
 inline constexpr std::string_view kRunMetricsSchema = "semslam.metrics/1";
 
-/// The keys of metrics.json, in file order ("schema" first).
+/// The keys of metrics.json, in file order ("schema", then "version", first).
 const std::vector<std::string>& runMetricsKeys();
 
 /// The metrics.json text (ends with a newline).

@@ -4,6 +4,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "semslam/core/Version.h"
+
 namespace semslam {
 
 namespace {
@@ -101,6 +103,7 @@ std::string trajectoryErrorJson(const TrajectoryErrorRequest& request, const Eva
   out["std"] = s.std;
   out["pairs"] = s.count;
   out["associated_poses"] = result.associatedPoses;
+  out["version"] = std::string(version());
   if (scaled(options)) out["scale"] = result.alignment.scale;
   if (request.relative) {
     out["delta"] = options.delta;

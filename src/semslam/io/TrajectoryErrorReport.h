@@ -3,8 +3,9 @@
 // estimated trajectory file (TUM, KITTI or EuRoC) and computes the absolute or relative pose error exactly as evo
 // does (eval/TrajectoryEvaluation.h); the result is then printed either as evo's Result.pretty_str (the title, a
 // blank line, the statistics sorted by name as "%10s\t%.6f", then a line of counts) or as a JSON object (metric,
-// relation, unit, align, reference, estimate, rmse, mean, median, max, min, sse, std, pairs, associated_poses;
-// scale when aligned with scale; delta, delta_unit, all_pairs for rpe). docs/evaluation.md.
+// relation, unit, align, reference, estimate, rmse, mean, median, max, min, sse, std, pairs, associated_poses,
+// version (the semslam release, core/Version.h); scale when aligned with scale; delta, delta_unit, all_pairs for
+// rpe). docs/evaluation.md.
 
 #include <string>
 

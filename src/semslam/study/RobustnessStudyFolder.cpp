@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "semslam/core/Version.h"
 #include "semslam/io/AtomicFile.h"
 
 namespace semslam {
@@ -17,6 +18,7 @@ std::string robustnessStudyJson(const RobustnessStudy& study, const RobustnessSt
                                 const RobustnessStudyLabels& labels) {
   const nlohmann::json settings = {
       {"schema", "semslam.study.robustness/1"},
+      {"version", std::string(version())},
       {"log", labels.log},
       {"methods", labels.methods},
       {"odom_noise_scales", options.noiseScales},

@@ -3,7 +3,8 @@
 // which python/plot_robustness.py draws:
 //   robustness.csv          one row per axis, level, seed and method (robustnessCsv)
 //   robustness_summary.csv  mean and 95% t-interval per axis, level and method (robustnessSummaryCsv)
-//   study.json              schema "semslam.study.robustness/1": the settings the study ran with (log, methods,
+//   study.json              schema "semslam.study.robustness/1", version (the semslam release that wrote it,
+//                           core/Version.h): the settings the study ran with (log, methods,
 //                           levels, seeds, paper B's options: gate, null_weight, null_sigma_scale, em_window,
 //                           em_iterations, warm_start; smoother, model floor, stuck rule, threads), the number of
 //                           runs and failed runs, and the wall time.
