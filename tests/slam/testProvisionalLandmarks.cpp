@@ -198,25 +198,28 @@ TEST(ProvisionalLandmarks, TwoDetectionsOfOneStepNeverShareALandmarkAtTheFinalEs
 namespace semslam {
 namespace {
 
+/// A relative-position sensor of range 10 m and opening π, labels from a categorical classifier, the first pose known.
+LogHeader labelledRelativePositionHeader(int classes, double misclassification) {
+  LogHeader header;
+  header.classes = classes;
+  header.semantic = SemanticKind::Label;
+  header.classifier.kind = ClassifierModelSpec::Kind::Categorical;
+  header.classifier.misclassification = misclassification;
+  header.sensor.kind = SensorKind::RelativePosition;
+  header.sensor.maxRange = 10.0;
+  header.sensor.fieldOfView = std::numbers::pi;
+  header.initialPose = PosePrior{SE2(), Vector3(1e-6, 1e-6, 1e-8).asDiagonal().toDenseMatrix()};
+  return header;
+}
+
 /// Landmarks L at (4, 1) and K at (5, −1), 10 classes, a categorical classifier wrong 1 % of the time. Step 0 (pose
 /// known) sees both; four steps of exact but very uncertain odometry (σ 2.3 m declared) follow; step 5 sees K with
 /// its own label and L misclassified. Under the pose's uncertainty neither prediction beats the unassigned
 /// hypothesis on geometry alone; K's label carries it, L's wrong label does not, so L's detection starts a
 /// provisional landmark. K's detection then pins the pose, and the merge test (§5) finds the new landmark where L is.
 struct LateMerge {
-  LogHeader header;
+  LogHeader header = labelledRelativePositionHeader(10, 0.01);
   Point2 l{4.0, 1.0}, k{5.0, -1.0};
-
-  LateMerge() {
-    header.classes = 10;
-    header.semantic = SemanticKind::Label;
-    header.classifier.kind = ClassifierModelSpec::Kind::Categorical;
-    header.classifier.misclassification = 0.01;
-    header.sensor.kind = SensorKind::RelativePosition;
-    header.sensor.maxRange = 10.0;
-    header.sensor.fieldOfView = std::numbers::pi;
-    header.initialPose = PosePrior{SE2(), Vector3(1e-6, 1e-6, 1e-8).asDiagonal().toDenseMatrix()};
-  }
 
   static Detection detectionOf(const Point2& world, const SE2& pose, int label, int truth) {
     Detection d;
@@ -272,19 +275,8 @@ namespace {
 /// to P (which moved with the pose), and P is confirmed. Step 9 sees K: its label carries it, the slip is found,
 /// and P now sits on L. Step 10 sees L, and the merge test puts P, the newer of two confirmed landmarks, into L.
 struct ConfirmedDuplicate {
-  LogHeader header;
+  LogHeader header = labelledRelativePositionHeader(3, 0.1);
   Point2 l{4.0, 1.0}, k{5.0, -1.0};
-
-  ConfirmedDuplicate() {
-    header.classes = 3;
-    header.semantic = SemanticKind::Label;
-    header.classifier.kind = ClassifierModelSpec::Kind::Categorical;
-    header.classifier.misclassification = 0.1;
-    header.sensor.kind = SensorKind::RelativePosition;
-    header.sensor.maxRange = 10.0;
-    header.sensor.fieldOfView = std::numbers::pi;
-    header.initialPose = PosePrior{SE2(), Vector3(1e-6, 1e-6, 1e-8).asDiagonal().toDenseMatrix()};
-  }
 
   TimeStep step(int k) const {
     const SE2 pose(0.1 * k + (k >= 4 ? 3.0 : 0.0), 0.0, 0.0);
