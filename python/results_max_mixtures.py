@@ -243,7 +243,8 @@ def robustness_sections(semslam, data, scratch, shown):
             heading = f"### {title}, first {steps} keyframes, `--birth {rule}`" + (
                 " (the default)" if rule == "unassigned" else " (paper B's rule)")
             lines += [heading, "", "```sh", shown(convert).replace(log, f"{name}.jsonl"),
-                      shown(study).replace(log, f"{name}.jsonl"), " ".join(["python3"] + plot[1:]).replace(HERE + "/", "python/"),
+                      shown(study).replace(log, f"{name}.jsonl"),
+                      " ".join(["python3"] + plot[1:]).replace(HERE + "/", "python/"),
                       "```", "", f"`{summary.replace(log, name + '.jsonl')}`", "",
                       f"![box plots]({os.path.relpath(out, 'docs')}/robustness.png)", "", "Odometry noise scale:", ""]
             lines += _robustness_table(rows, "odom_noise") + ["", "Misclassification rate:", ""]

@@ -91,7 +91,9 @@ TEST(RunCommand, AssociationsReportEachDetectionsResidualAtTheFinalEstimate) {
   const fs::path log = dir / "run.jsonl";
   ASSERT_EQ(runSemslam("simulate semantic --steps 300 --seed 4 --out \"" + log.string() + "\"").exitCode, 0);
   const fs::path out = dir / "known";
-  ASSERT_EQ(runSemslam("run --method known --no-covariances --in \"" + log.string() + "\" --out \"" + out.string() + "\"").exitCode, 0);
+  ASSERT_EQ(runSemslam("run --method known --no-covariances --in \"" + log.string() + "\" --out \"" + out.string() + "\"")
+                .exitCode,
+            0);
   std::ifstream associations(out / "associations.csv");
   std::string row;
   std::getline(associations, row);

@@ -246,7 +246,7 @@ void SemanticSlam::addStep(const TimeStep& step) {
         associations.add(factory_.detectionFactor(pose, landmarks_[index].key, record.measurement));
         landmarks_[index].classBelief.update(record.semanticLikelihoods);
         if (birthTime) {
-          weakPriors.add(landmarkPrior(index, initial, std::max(unassigned_.maxRange(), 1e-3)));
+          weakPriors.add(landmarkPrior(index, initial, weakPriorSigma()));
           weakPriorLandmarks.push_back(index);
         }
         if (orientationUnobservable_) orientationPriors.add(landmarkPrior(index, initial, kUnconstrainedSigma));
@@ -514,7 +514,7 @@ void SemanticSlam::applyEdits(std::vector<std::size_t> touched, std::vector<Fact
   }
   const Values& estimate = smoother_->estimate();
   for (int landmark : heldByPrior) {  // after the records' factors
-    added.add(landmarkPrior(landmark, estimate.value(landmarks_[landmark].key), std::max(unassigned_.maxRange(), 1e-3)));
+    added.add(landmarkPrior(landmark, estimate.value(landmarks_[landmark].key), weakPriorSigma()));
   }
   if (added.size() == 0 && removed.empty()) return;
   const std::vector<FactorIndex> indices = smoother_->update(added, {}, removed);

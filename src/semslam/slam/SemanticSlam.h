@@ -48,6 +48,7 @@
 // every candidate list); every detection of every step processed has exactly one DetectionRecord; a record's
 // `factors` are exactly the smoother factors in force for its detection.
 
+#include <algorithm>
 #include <functional>
 #include <map>
 #include <memory>
@@ -162,6 +163,8 @@ class SemanticSlam {
   /// landmark's weak prior (§5: positionSigma = r_max), or, with kUnconstrainedSigma, the prior that holds the
   /// orientation of a posed landmark seen by a position-only sensor (nothing else observes it).
   FactorPtr landmarkPrior(int landmark, const Value& value, double positionSigma) const;
+  /// The position σ of a provisional (or merged-away) landmark's weak prior: r_max (§5), at least 1 mm.
+  double weakPriorSigma() const { return std::max(unassigned_.maxRange(), 1e-3); }
   /// Posterior of the best candidate against the others and (BirthRule::Unassigned) the unassigned hypothesis.
   static double bestPosterior(const DetectionRecord& record);
   /// p_geo(z | landmark) of step 2 at the current estimate: the detection's factor to `landmark` from the newest

@@ -286,7 +286,8 @@ std::string robustnessSummaryCsv(const std::vector<RobustnessRow>& rows) {
         << "," << std::get<2>(key) << "," << ate.n << "," << number(ate.mean) << "," << number(ate.low) << ","
         << number(ate.high) << "," << number(rot.mean) << "," << number(rot.low) << "," << number(rot.high) << ","
         << number(da.mean) << "," << number(da.low) << "," << number(da.high) << "," << number(daReal.mean) << ","
-        << number(daReal.low) << "," << number(daReal.high) << "," << number(meanInterval(g.landmarks).mean) << "," << number(meanInterval(g.time).mean) << ","
+        << number(daReal.low) << "," << number(daReal.high) << "," << number(meanInterval(g.landmarks).mean) << ","
+        << number(meanInterval(g.time).mean) << ","
         << (g.stuckDefined > 0 ? number(static_cast<double>(g.stuck) / g.stuckDefined) : "") << "," << g.failed
         << "\n";
   }
