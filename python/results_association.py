@@ -11,6 +11,8 @@ import os
 import subprocess
 import sys
 
+from results_max_mixtures import kitti_simulation
+
 ROBOTS = [1, 2, 3, 4, 5]
 COLUMNS = ["ate_rmse", "da_accuracy_real", "pairwise_precision", "pairwise_recall", "clutter_rejected",
            "landmarks_merged", "landmarks_split", "landmarks_estimated", "time_s"]
@@ -118,7 +120,7 @@ def kitti_generalisation_section(semslam, data, scratch, shown):
         if not os.path.exists(trajectory):
             continue
         log = os.path.join(scratch, f"kitti{sequence}-seed{seed}.jsonl")
-        _run(kitti_simulation(semslam, trajectory, seed, log))
+        _run(kitti_simulation(semslam, trajectory, log, seed))
         for method in KITTI_METHODS:
             out = os.path.join(scratch, f"kitti{sequence}-seed{seed}-{method}")
             jobs.append((sequence, seed, method, out,
@@ -138,16 +140,10 @@ def kitti_generalisation_section(semslam, data, scratch, shown):
         lines.append(f"| {sequence} | {seed} | {known['ate_rmse']:.3f} | {ml['ate_rmse']:.3f} | {mm['ate_rmse']:.3f} | "
                      f"{ml['da_accuracy_real']:.3f} | {mm['da_accuracy_real']:.3f} | {mm['time_s']:.1f} | "
                      f"{'yes' if ok else 'no'} |")
-    example = kitti_simulation(semslam, "../shared/data/kitti-odometry-poses/SEQ.txt", "S", "kSEQ-S.jsonl")
+    example = kitti_simulation(semslam, "../shared/data/kitti-odometry-poses/SEQ.txt", "kSEQ-S.jsonl", "S")
     lines += ["", f"Target met on {met} of {len(results) // len(KITTI_METHODS)} logs.", "", "```sh",
               shown([str(a) for a in example]),
               "for m in known ml mm-nh; do build/bin/semslam run --method $m --in kSEQ-S.jsonl --out kSEQ-S/$m "
               "--no-covariances; done", "```", ""]
     return lines
 
-
-def kitti_simulation(semslam, trajectory, seed, out):
-    """The simulation command of docs/results.md's KITTI 00 log, with a seed."""
-    return [semslam, "simulate", "semantic", "--dimension", "3", "--trajectory", trajectory, "--trajectory-format",
-            "kitti", "--stride", "5", "--classes", "3", "--max-range", "30", "--landmark-density", "0.05",
-            "--max-offset", "10", "--seed", str(seed), "--out", out]

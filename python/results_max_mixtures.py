@@ -137,9 +137,7 @@ def max_mixture_sections(semslam, data, scratch, shown):
     kitti = os.path.join(data, "kitti-odometry-poses", "00.txt")
     if os.path.exists(kitti):
         log = os.path.join(scratch, "kitti00.jsonl")
-        simulate = [semslam, "simulate", "semantic", "--dimension", "3", "--trajectory", kitti,
-                    "--trajectory-format", "kitti", "--stride", "5", "--classes", "3", "--max-range", "30",
-                    "--landmark-density", "0.05", "--max-offset", "10", "--out", log]
+        simulate = kitti_simulation(semslam, kitti, log)
         _run(simulate)
         table, figure = _methods_on_log(semslam, log, "kitti00", scratch, figures,
                                         "semantic simulator over KITTI 00 (3D, from above)")
@@ -159,6 +157,15 @@ ROBUSTNESS_LOGS = [
 ROBUSTNESS_STUDY = ["--methods", ",".join(METHODS), "--odom-noise-scale", "0,1,2,5,10,20",
                     "--misclassification", "0,0.1,0.2,0.3,0.5", "--seeds", "10", "--threads", "2", "--quiet",
                     "--smoother", "batch"]
+
+
+def kitti_simulation(semslam, trajectory, out, seed=None):
+    """The semantic simulation over a KITTI odometry trajectory of the KITTI 00 results (the simulator's default
+    seed, 1, unless `seed` is given)."""
+    command = [semslam, "simulate", "semantic", "--dimension", "3", "--trajectory", trajectory, "--trajectory-format",
+               "kitti", "--stride", "5", "--classes", "3", "--max-range", "30", "--landmark-density", "0.05",
+               "--max-offset", "10"]
+    return command + (["--seed", str(seed)] if seed is not None else []) + ["--out", out]
 
 
 def _robustness_table(rows, axis):
