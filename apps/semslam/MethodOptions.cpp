@@ -42,6 +42,9 @@ void addSemanticSlamOptions(CLI::App* command, SemanticSlamOptions& options) {
       ->capture_default_str();
   command->add_flag("--no-warm-start{false}", options.warmStart,
                     "mm, mm-nh: choose mixture components at the odometry prediction (docs/max-mixtures.md)");
+  command->add_flag("--label-split", options.labelSplit,
+                    "birth unassigned: split a landmark whose labels say it holds two objects "
+                    "(docs/association-front-end.md §5d)");
   command->add_option("--warm-start-posterior", options.warmStartMinimumPosterior,
                       "mm, mm-nh: warm-start a detection only on a candidate of at least this posterior "
                       "(0: every detection; docs/association-front-end.md)")

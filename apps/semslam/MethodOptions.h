@@ -12,7 +12,7 @@
 namespace semslam::cli {
 
 /// Paper B's pipeline: --gate, --null-weight, --null-sigma-scale, --em-window, --em-iterations, --birth,
-/// --confirmations, --patience, --unassigned-rate, --no-warm-start, --warm-start-posterior.
+/// --confirmations, --patience, --unassigned-rate, --no-warm-start, --label-split, --warm-start-posterior.
 void addSemanticSlamOptions(CLI::App* command, SemanticSlamOptions& options);
 
 /// Paper A's hybrid belief: --samples, --weights, --importance-iterations, --prune-ratio, --gate-ratio, --branching,

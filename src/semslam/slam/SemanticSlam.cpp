@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "semslam/association/LandmarkSplit.h"
 #include "semslam/association/MarginalLikelihood.h"
 #include "semslam/factors/MaxMixtureFactor.h"
 #include "semslam/models/HypothesisComponent.h"
@@ -110,7 +111,7 @@ int SemanticSlam::addLandmark(const Value& value, std::optional<int> truthId, Va
                               std::optional<double> birthTime) {
   const int index = landmarks();
   const Key key = landmarkKey(static_cast<std::uint64_t>(index));
-  landmarks_.push_back({key, ClassBelief(header_.classes), {}, std::nullopt});
+  landmarks_.push_back({key, ClassBelief(header_.classes), {}, std::nullopt, {}});
   if (birthTime) {
     lifecycle_.addProvisional(*birthTime);
   } else {
@@ -498,7 +499,7 @@ std::vector<FactorPtr> SemanticSlam::recordFactors(DetectionRecord& record) cons
 }
 
 void SemanticSlam::applyEdits(std::vector<std::size_t> touched, std::vector<FactorIndex> removed,
-                              const std::vector<int>& heldByPrior) {
+                              const std::vector<int>& heldByPrior, const Values& newLandmarks) {
   std::sort(touched.begin(), touched.end());
   touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
   FactorGraph added;
@@ -513,11 +514,20 @@ void SemanticSlam::applyEdits(std::vector<std::size_t> touched, std::vector<Fact
     }
   }
   const Values& estimate = smoother_->estimate();
+  auto valueOf = [&](int landmark) -> const Value& {
+    const Key key = landmarks_[landmark].key;
+    return newLandmarks.exists(key) ? newLandmarks.value(key) : estimate.value(key);
+  };
   for (int landmark : heldByPrior) {  // after the records' factors
-    added.add(landmarkPrior(landmark, estimate.value(landmarks_[landmark].key), weakPriorSigma()));
+    added.add(landmarkPrior(landmark, valueOf(landmark), weakPriorSigma()));
+  }
+  if (orientationUnobservable_) {  // last: like every new landmark's (step 2)
+    for (const auto& [key, value] : newLandmarks) {
+      added.add(landmarkPrior(static_cast<int>(Symbol(key).index()), value, kUnconstrainedSigma));
+    }
   }
   if (added.size() == 0 && removed.empty()) return;
-  const std::vector<FactorIndex> indices = smoother_->update(added, {}, removed);
+  const std::vector<FactorIndex> indices = smoother_->update(added, newLandmarks, removed);
   for (std::size_t i = 0; i < addedBy.size(); ++i) records_[addedBy[i]].factors.push_back(indices[i]);
   for (std::size_t i = 0; i < heldByPrior.size(); ++i) {
     landmarks_[heldByPrior[i]].weakPrior = indices[addedBy.size() + i];
@@ -709,6 +719,8 @@ void SemanticSlam::mergeDuplicateLandmarks(const std::vector<bool>& seen, std::v
       if (!(sameClass > 0.0)) continue;
       const double score = logGaussian + std::log(sameClass);
       if (score <= bestScore) continue;
+      const std::vector<int>& distinct = landmarks_[p].distinctFrom;
+      if (std::find(distinct.begin(), distinct.end(), l) != distinct.end()) continue;  // split apart (§5d)
       const std::vector<int> stepsOfL = stepsOn(l);
       std::vector<int> shared;
       std::set_intersection(stepsOfP.begin(), stepsOfP.end(), stepsOfL.begin(), stepsOfL.end(),
@@ -750,6 +762,93 @@ void SemanticSlam::updateLifecycle(int k, double time, int landmarksBeforeStep) 
   std::vector<int> heldByPrior;
   mergeDuplicateLandmarks(seen, touched, removed, heldByPrior);
   applyEdits(std::move(touched), std::move(removed), heldByPrior);
+  if (options_.labelSplit) splitLandmarks(seen);
+}
+
+void SemanticSlam::rebuildClassBelief(int landmark) {
+  Landmark& target = landmarks_[landmark];
+  target.classBelief = ClassBelief(header_.classes);
+  for (std::size_t r : target.records) {
+    const DetectionRecord& record = records_[r];
+    if (record.createdLandmark == landmark) {
+      target.classBelief.update(record.semanticLikelihoods);
+      continue;
+    }
+    const auto found = std::find(record.candidates.begin(), record.candidates.end(), landmark);
+    if (found != record.candidates.end()) {
+      target.classBelief.update(record.semanticLikelihoods, record.weights[found - record.candidates.begin()]);
+    }
+  }
+}
+
+void SemanticSlam::splitLandmarks(const std::vector<bool>& seen) {
+  // (§5d) The detections on a landmark (started it or assigned to it), linearised with their poses held fixed at
+  // the estimate, and their labels: LandmarkSplit.h decides. The second object becomes a new landmark at its own
+  // position, provisional until its moved detections confirm it by the M-of-N rule; the two never merge again.
+  if (header_.semantic == SemanticKind::None || header_.classes < 2) return;
+  const Values& estimate = smoother_->estimate();
+  const int d = factory_.dimension();
+  std::vector<std::size_t> touched;
+  std::vector<int> heldByPrior;
+  Values newLandmarks;
+  const int existing = landmarks();
+  for (int j = 0; j < existing; ++j) {
+    if (!seen[static_cast<std::size_t>(j)] || !lifecycle_.active(j)) continue;
+    std::vector<std::size_t> on;  // the records on j
+    std::vector<SplitEvidence> evidence;
+    LinearizedFactor linearized;
+    std::vector<std::size_t> records = landmarks_[j].records;
+    std::sort(records.begin(), records.end());  // in time order: a merge appends older records
+    for (std::size_t r : records) {
+      const DetectionRecord& record = records_[r];
+      const bool assigned = record.assigned == j && std::find(record.candidates.begin(), record.candidates.end(),
+                                                              j) != record.candidates.end();
+      if (record.createdLandmark != j && !assigned) continue;
+      const FactorPtr factor = factory_.detectionFactor(poseKeys_[static_cast<std::size_t>(record.step)],
+                                                        landmarks_[j].key, record.measurement);
+      factor->linearize(estimate, linearized);
+      const auto position = std::find(factor->keys().begin(), factor->keys().end(), landmarks_[j].key);
+      const Matrix& jacobian = linearized.jacobians[static_cast<std::size_t>(position - factor->keys().begin())];
+      evidence.push_back({record.semanticLikelihoods, linearized.whitenedError, jacobian.leftCols(d)});
+      on.push_back(r);
+    }
+    const std::optional<LandmarkSplitDecision> split = bestLandmarkSplit(evidence, unassigned_.logCartesianDensity());
+    if (!split) continue;
+    Vector tangent = Vector::Zero(factory_.landmarkTangentDimension());
+    tangent.head(d) = split->secondDelta;
+    const Value initial = retract(estimate.value(landmarks_[j].key), tangent);
+    std::vector<std::size_t> moved;
+    for (std::size_t i = 0; i < on.size(); ++i) {
+      if (split->second[i]) moved.push_back(on[i]);
+    }
+    Values unused;  // the variable enters with the edit below
+    const int second = addLandmark(initial, std::nullopt, unused,
+                                   stepTimes_[static_cast<std::size_t>(records_[moved.front()].step)]);
+    newLandmarks.insert(landmarks_[second].key, initial);
+    landmarks_[j].distinctFrom.push_back(second);
+    landmarks_[second].distinctFrom.push_back(j);
+    for (std::size_t r : moved) {
+      DetectionRecord& record = records_[r];
+      if (record.createdLandmark == j) {
+        record.createdLandmark = second;
+      } else {
+        *std::find(record.candidates.begin(), record.candidates.end(), j) = second;  // its likelihood stays
+        record.assigned = second;
+      }
+      landmarks_[second].records.push_back(r);
+      touched.push_back(r);
+    }
+    std::erase_if(landmarks_[j].records,
+                  [&](std::size_t r) { return std::find(moved.begin(), moved.end(), r) != moved.end(); });
+    rebuildClassBelief(j);
+    rebuildClassBelief(second);
+    bool confirmed = false;  // the moved detections after the first count towards M, as a merge's do
+    for (std::size_t i = 1; i < moved.size(); ++i) {
+      confirmed |= lifecycle_.observe(second, stepTimes_[static_cast<std::size_t>(records_[moved[i]].step)]);
+    }
+    if (!confirmed && lifecycle_.provisional(second)) heldByPrior.push_back(second);
+  }
+  applyEdits(std::move(touched), {}, heldByPrior, newLandmarks);
 }
 
 bool SemanticSlam::repairExclusion(std::size_t first, std::size_t end) {

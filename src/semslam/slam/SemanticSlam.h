@@ -98,6 +98,8 @@ struct SemanticSlamOptions {
   LandmarkLifecycle::Rule provisional;  ///< BirthRule::Unassigned: the M-of-N rule of provisional landmarks
   SmootherFactory smoother;       ///< the back end; empty: the IncrementalSmoother
   bool candidatePreselection = true;  ///< test only: false tests every landmark (docs/association-front-end.md §7)
+  bool labelSplit = false;        ///< BirthRule::Unassigned: a landmark whose labels say it holds two objects
+                                  ///< splits (LandmarkSplit.h); opt-in, measured in docs/association-front-end.md §5d
 };
 
 /// What became of one detection.
@@ -150,6 +152,7 @@ class SemanticSlam {
     ClassBelief classBelief;
     std::vector<std::size_t> records;       // records that start it or hold it as a candidate
     std::optional<FactorIndex> weakPrior;   // a provisional landmark's prior, while it has one
+    std::vector<int> distinctFrom;          // landmarks split from it or it from them (§5d): never merged with it
   };
 
   /// The index (into record.candidates) of the candidate the detection's plain factor and warm start use: the
@@ -186,9 +189,10 @@ class SemanticSlam {
   /// The factors a record stands for now: its own landmark's factor, its candidates' factors, or none.
   std::vector<FactorPtr> recordFactors(DetectionRecord& record) const;
   /// Replaces the factors of `touched` records by recordFactors(), removes `removed` and gives each landmark of
-  /// `heldByPrior` a weak prior at its estimate, in one update.
+  /// `heldByPrior` a weak prior at its estimate (or its value in `newLandmarks`), in one update that also inserts
+  /// the variables of `newLandmarks` (with an unobservable orientation: each with its orientation prior).
   void applyEdits(std::vector<std::size_t> touched, std::vector<FactorIndex> removed,
-                  const std::vector<int>& heldByPrior = {});
+                  const std::vector<int>& heldByPrior = {}, const Values& newLandmarks = Values());
   /// Step 6 (§5) after step `k`'s solve: confirmations, drops of landmarks in the field, merges; one update.
   void updateLifecycle(int k, double time, int landmarksBeforeStep);
   void dropLandmark(int landmark, std::vector<std::size_t>& touched);
@@ -197,6 +201,11 @@ class SemanticSlam {
   /// active landmarks within the sensor's range of it; confirmed landmarks merged away go to `heldByPrior`.
   void mergeDuplicateLandmarks(const std::vector<bool>& seen, std::vector<std::size_t>& touched,
                                std::vector<FactorIndex>& removed, std::vector<int>& heldByPrior);
+  /// (§5d) Every active landmark `seen` at this step whose detections' labels say it holds two objects splits: the
+  /// detections of the second move to a new landmark at their own position (LandmarkSplit.h); one update.
+  void splitLandmarks(const std::vector<bool>& seen);
+  /// The class belief of `landmark` rebuilt from the records on it, as step 5 builds it.
+  void rebuildClassBelief(int landmark);
   /// A detection at `time` on `landmark` counts towards confirming it; once confirmed, its weak prior goes.
   void confirmIfDue(int landmark, double time, std::vector<FactorIndex>& removed);
   /// Removes `landmark` from the record's candidates (weight, likelihood, assignment), renormalising the rest.

@@ -38,6 +38,7 @@ std::string robustnessStudyJson(const RobustnessStudy& study, const RobustnessSt
       {"unassigned_rate", options.slam.unassignedRate},
       {"smoother", labels.smoother},
       {"warm_start", options.slam.warmStart},
+      {"label_split", options.slam.labelSplit},
       {"model_misclassification_floor", options.modelMisclassificationFloor},
       {"stuck_ratio", options.stuckRatio},
       {"stuck_margin_m", options.stuckMargin},

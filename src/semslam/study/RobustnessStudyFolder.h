@@ -6,8 +6,8 @@
 //   study.json              schema "semslam.study.robustness/1", version (the semslam release that wrote it,
 //                           core/Version.h): the settings the study ran with (log, methods,
 //                           levels, seeds, paper B's options: gate, null_weight, null_sigma_scale, em_window,
-//                           em_iterations, warm_start; smoother, model floor, stuck rule, threads), the number of
-//                           runs and failed runs, and the wall time.
+//                           em_iterations, warm_start, label_split; smoother, model floor, stuck rule,
+//                           threads), the number of runs and failed runs, and the wall time.
 // Every file is written atomically; the folder is created if needed.
 
 #include <string>
