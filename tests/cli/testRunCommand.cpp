@@ -135,3 +135,21 @@ TEST(StudyCommand, SmallHybridStudyWritesSummary) {
   EXPECT_EQ(header, "alpha,model,entropy,det_cov,err_wmax,err_wavg");
   fs::remove_all(dir);
 }
+
+TEST(RunCommand, EveryMethodShowsProgressUnlessQuiet) {
+  const fs::path dir = freshDirectory("semslam_run_progress");
+  const fs::path log = dir / "run.jsonl";
+  ASSERT_EQ(runSemslam("simulate semantic --steps 20 --seed 4 --out \"" + log.string() + "\"").exitCode, 0);
+  for (const std::string method : {"known", "ml", "gpda", "mm", "mm-nh"}) {
+    const std::string command = "run --method " + method + " --in \"" + log.string() + "\" --out \"" +
+                                (dir / method).string() + "\" --no-covariances";
+    // Off a terminal (the output here is a pipe) the last line comes at the end of a run however short it is.
+    const auto shown = runSemslam(command);
+    ASSERT_EQ(shown.exitCode, 0) << shown.output;
+    EXPECT_NE(shown.output.find("run " + method + ": 21/21"), std::string::npos) << shown.output;
+    const auto quiet = runSemslam(command + " --quiet");
+    ASSERT_EQ(quiet.exitCode, 0) << quiet.output;
+    EXPECT_EQ(quiet.output.find("run " + method + ":"), std::string::npos) << quiet.output;
+  }
+  fs::remove_all(dir);
+}

@@ -39,7 +39,7 @@ TEST(SimulateCli, SeveralTracksGoToAFolder) {
   const auto result = runSemslam("simulate aliased2d --tracks 12 --steps 10 --out " + quoted(out));
   ASSERT_EQ(result.exitCode, 0) << result.output;
   EXPECT_NE(result.output.find("simulate aliased2d tracks: 12/12"), std::string::npos)
-      << result.output;  // progress (core/ProgressBar.h, one line per tenth off a terminal)
+      << result.output;  // progress (core/ProgressBar.h: its last line off a terminal)
   for (int track = 0; track < 12; ++track) {
     char name[32];
     std::snprintf(name, sizeof name, "track_%03d.jsonl", track);
