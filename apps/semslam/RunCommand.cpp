@@ -17,6 +17,7 @@
 #include "semslam/io/MeasurementLogFile.h"
 #include "semslam/run/KnownTrajectoryCeiling.h"
 #include "semslam/run/RunMethod.h"
+#include "semslam/solve/UnconstrainedSystem.h"
 
 namespace semslam::cli {
 namespace {
@@ -65,6 +66,11 @@ void run(RunArguments arguments) {
     }
   } catch (const std::invalid_argument& error) {
     throw InputError(arguments.in, 0, error.what());
+  } catch (const UnconstrainedSystemError& error) {  // the log leaves a variable free: say what would hold it
+    throw InputError(arguments.in, 0,
+                     std::string(error.what()) +
+                         " (In a measurement log the header's initial_pose is the prior on the first pose and "
+                         "landmark_priors hold known landmarks; docs/measurement-log.md.)");
   }
   writeMethodRun(arguments.out, result);
   printSummary(arguments, log, result);

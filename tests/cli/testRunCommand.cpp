@@ -153,3 +153,26 @@ TEST(RunCommand, EveryMethodShowsProgressUnlessQuiet) {
   }
   fs::remove_all(dir);
 }
+
+TEST(RunCommand, AHybridRunWithoutAPriorOnTheFirstPoseSaysHowToSupplyIt) {
+  const fs::path dir = freshDirectory("semslam_run_no_prior");
+  const fs::path log = dir / "track.jsonl";
+  ASSERT_EQ(runSemslam("simulate aliased2d --steps 3 --seed 2 --out \"" + log.string() + "\"").exitCode, 0);
+  // The same log with the header's initial_pose removed.
+  std::ifstream in(log);
+  std::string header, rest, line;
+  std::getline(in, header);
+  while (std::getline(in, line)) rest += line + "\n";
+  in.close();
+  nlohmann::ordered_json headerJson = nlohmann::ordered_json::parse(header);
+  ASSERT_TRUE(headerJson.contains("initial_pose"));
+  headerJson.erase("initial_pose");
+  const fs::path stripped = dir / "no_prior.jsonl";
+  std::ofstream(stripped) << headerJson.dump() << "\n" << rest;
+  const auto result = runSemslam("run --method hybrid --in \"" + stripped.string() + "\" --out \"" +
+                                 (dir / "out").string() + "\" --samples 50");
+  EXPECT_EQ(result.exitCode, 2) << result.output;
+  EXPECT_NE(result.output.find("no initial pose prior"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("\"initial_pose\""), std::string::npos) << result.output;
+  fs::remove_all(dir);
+}
