@@ -109,13 +109,21 @@ void addAliased(CLI::App& simulate) {
 
 struct SemanticCliOptions {
   std::string out;
+  bool quiet = false;
   std::uint64_t seed = 1;
   SemanticTruthOptions truth;
   SemanticSimOptions sim;
 };
 
 void runSemantic(const SemanticCliOptions& options) {
-  const SemanticSimulation simulation = simulateSemanticRun(options.truth, options.sim, options.seed);
+  // A long trajectory file (KITTI 00: 4541 poses) takes seconds: one progress line (core/ProgressBar.h), made at
+  // the first step, when the number of steps is known.
+  std::optional<ProgressBar> progress;
+  const SemanticSimulation simulation =
+      simulateSemanticRun(options.truth, options.sim, options.seed, [&progress, &options](int done, int total) {
+        if (!progress) progress.emplace("simulate semantic", total, options.quiet);
+        progress->update(done);
+      });
   const MeasurementLog& log = simulation.log;
   writeMeasurementLog(options.out, log);
   std::size_t detections = 0;
@@ -181,6 +189,7 @@ void addSemantic(CLI::App& simulate) {
   command->add_option("--odom-covariance-scale", s.odomCovarianceScale,
                       "covariance stated in the log = scale^2 x baseline (default: the noise scale)");
   command->add_option("--clutter", s.clutter, "mean false detections per step (Poisson)")->capture_default_str();
+  command->add_flag("--quiet", o.quiet, "no progress line");
   command->callback([options]() { runSemantic(*options); });
 }
 

@@ -183,3 +183,14 @@ TEST(OptimizeCommand, AGraphThatLeavesVerticesFreeSaysWhichAndHowToHoldThem) {
     }
   }
 }
+
+TEST(OptimizeCommand, TheIncrementalReplayShowsProgressUnlessQuiet) {
+  TempDir dir;
+  const std::string input = dir.file("progress.g2o", kGoodGraph);
+  const auto shown = runSemslam("optimize " + input + " --incremental");
+  ASSERT_EQ(shown.exitCode, 0) << shown.output;
+  EXPECT_NE(shown.output.find("optimize --incremental: 3/3"), std::string::npos) << shown.output;
+  const auto quiet = runSemslam("optimize " + input + " --incremental --quiet");
+  ASSERT_EQ(quiet.exitCode, 0) << quiet.output;
+  EXPECT_EQ(quiet.output.find("optimize --incremental:"), std::string::npos) << quiet.output;
+}

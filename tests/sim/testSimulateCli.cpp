@@ -105,6 +105,17 @@ TEST(SimulateCli, SemanticIsDeterministicAcrossRuns) {
   }
 }
 
+TEST(SimulateCli, SemanticShowsProgressUnlessQuiet) {
+  ScratchFolder folder;
+  const std::string out = folder.file("p.jsonl");
+  const auto shown = runSemslam("simulate semantic --steps 50 --out " + quoted(out));
+  ASSERT_EQ(shown.exitCode, 0) << shown.output;
+  EXPECT_NE(shown.output.find("simulate semantic: 51/51"), std::string::npos) << shown.output;
+  const auto quiet = runSemslam("simulate semantic --steps 50 --quiet --out " + quoted(out));
+  ASSERT_EQ(quiet.exitCode, 0) << quiet.output;
+  EXPECT_EQ(quiet.output.find("simulate semantic:"), std::string::npos) << quiet.output;
+}
+
 TEST(SimulateCli, SemanticFromKitti) {
   SEMSLAM_REQUIRE_DATA(file, "kitti-odometry-poses/00.txt");
   ScratchFolder folder;

@@ -59,11 +59,12 @@ void replayIncrementally(const PoseGraphOptimizationOptions& options, const Pose
   IncrementalSmoother smoother(options.incrementalParams);
   PoseGraphReplayStatistics statistics;
   double reeliminated = 0.0, relinearized = 0.0, solved = 0.0;
-  const ReplayLoopTimes times = replayPoseGraph(replay, smoother, [&](std::size_t, const IncrementalSmoother& s) {
+  const ReplayLoopTimes times = replayPoseGraph(replay, smoother, [&](std::size_t k, const IncrementalSmoother& s) {
     reeliminated += s.lastUpdate().reeliminatedVariables;
     relinearized += s.lastUpdate().relinearizedVariables;
     solved += s.lastUpdate().solvedCliques;
     statistics.fullReorderings += s.lastUpdate().fullReordering ? 1 : 0;
+    if (options.progress) options.progress(static_cast<int>(k + 1), static_cast<int>(replay.size()));
   });
   if (options.finalConvergence) {
     OptimizerParams params;
