@@ -3,7 +3,7 @@
 #   make deps     install the Debian packages the build needs (only those missing)
 #   make build    configure and build (Release) into build/
 #   make test     build, then run every test through ctest
-#   make demo     build, then run paper B's mm-nh on the built-in ambiguous log and plot it
+#   make demo     build, then run paper B's mm-nh and known association on the built-in ambiguous log, plot both
 #   make bench    build and run the benchmarks (installs libceres-dev for the Ceres comparison), then the
 #                 incremental replay benchmark and the candidate pre-selection benchmark
 #   make results  regenerate the measured results in docs/results.md
@@ -19,7 +19,8 @@ PYTHON ?= /usr/bin/python3
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
 DEB_PACKAGES := build-essential cmake pkg-config libeigen3-dev libsuitesparse-dev libgtest-dev libgmock-dev \
-                libcli11-dev nlohmann-json3-dev python3 python3-matplotlib python3-numpy
+                libcli11-dev nlohmann-json3-dev libboost-dev python3 python3-matplotlib python3-numpy \
+                python3-scipy
 BENCH_PACKAGES := libbenchmark-dev libceres-dev
 
 # Installs each named package that dpkg does not report as installed; `apt-get update` first, since a fresh
@@ -53,7 +54,8 @@ test: build
 
 demo: build
 	$(BUILD_DIR)/bin/semslam demo --out $(BUILD_DIR)/demo
-	$(PYTHON) python/plot_run.py $(BUILD_DIR)/demo --title "semslam demo: paper B's mm-nh among look-alike landmarks"
+	$(PYTHON) python/plot_run.py $(BUILD_DIR)/demo --compare $(BUILD_DIR)/demo/known \
+	  --title "semslam demo: paper B's mm-nh and known association among look-alike landmarks"
 
 bench: deps-bench
 	cmake -S . -B $(BUILD_DIR)-bench -DCMAKE_BUILD_TYPE=Release -DSEMSLAM_BUILD_TESTS=OFF -DSEMSLAM_BUILD_BENCH=ON \

@@ -20,19 +20,14 @@ import math
 import os
 import sys
 
+import scipy.stats
+
 
 def t_quantile_975(dof):
-    """Two-sided 95 % Student t quantile (Cornish-Fisher expansion; exact to 1e-3 for dof >= 3)."""
-    z = 1.959963984540054
+    """Two-sided 95 % Student t quantile with dof degrees of freedom (scipy.stats.t, Debian's python3-scipy)."""
     if dof <= 0:
         return float("nan")
-    table = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776}
-    if dof in table:
-        return table[dof]
-    g1 = (z ** 3 + z) / 4
-    g2 = (5 * z ** 5 + 16 * z ** 3 + 3 * z) / 96
-    g3 = (3 * z ** 7 + 19 * z ** 5 + 17 * z ** 3 - 15 * z) / 384
-    return z + g1 / dof + g2 / dof ** 2 + g3 / dof ** 3
+    return float(scipy.stats.t.ppf(0.975, dof))
 
 
 def mean_ci(values):
@@ -201,7 +196,15 @@ def fig4(classifier, geometric, steps, out):
             ax.set_title(f"k = {k}, {'with' if model == 'classifier' else 'without'} classifier "
                          f"({len(record['components'])} comp.)", fontsize=9)
             ax.set_aspect("equal", adjustable="datalim")
+            ax.set_xlabel("x [m]")
+            ax.set_ylabel("y [m]")
             ax.grid(alpha=0.3)
+            if col == 0:
+                # Proxies: what the colours and marks stand for (sizes and widths grow with the weight).
+                ax.plot([], [], "o", color=color, markersize=4, label="component mean (size: weight)")
+                ax.plot([], [], color="navy", linewidth=1, label="heading")
+                ax.plot([], [], color=color, linewidth=1, label="2-sigma position ellipse")
+                ax.legend(fontsize=7, loc="best")
         ax = axes[2][col]
         histories = {}
         for model in ("geometric", "classifier"):
@@ -210,9 +213,9 @@ def fig4(classifier, geometric, steps, out):
         keys = sorted(histories, key=lambda h: -max(histories[h].values()))[:20]
         xs = range(len(keys))
         ax.bar([x - 0.2 for x in xs], [histories[h].get("geometric", 0) for h in keys], width=0.4, color="tab:blue",
-               label="without")
+               label="without classifier")
         ax.bar([x + 0.2 for x in xs], [histories[h].get("classifier", 0) for h in keys], width=0.4, color="tab:red",
-               label="with")
+               label="with classifier")
         true = [truth_hist.get(s, []) for s in range(k + 1)]
         for x, h in zip(xs, keys):
             if json.loads(h) == true:
@@ -220,6 +223,9 @@ def fig4(classifier, geometric, steps, out):
                         markersize=10)
         ax.set_ylim(0, 1.15)
         ax.set_title(f"P(beta_1:k | H_k), k = {k} (top 20)", fontsize=9)
+        ax.set_xlabel("association history (rank by weight)")
+        ax.set_ylabel("probability")
+        ax.plot([], [], "o", markerfacecolor="none", markeredgecolor="green", label="true history")
         ax.set_xticks(list(xs))
         ax.set_xticklabels([str(i) for i in xs], fontsize=6)
         if col == 0:

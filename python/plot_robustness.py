@@ -6,6 +6,7 @@ Usage: /usr/bin/python3 python/plot_robustness.py DIR [--metrics ate_rmse,rot_rm
 Reads DIR/robustness.csv and writes DIR/robustness_<metric>.png for each metric: two panels, (a) the odometry
 noise sweep and (b) the misclassification sweep; per level one box per method (seeds are the samples), methods
 in a fixed colour. Also DIR/robustness.png: all metrics in one figure (rows: metrics, columns: sweeps).
+The y axes do not exaggerate differences: fractions (DA accuracy) span 0 to 1, errors and counts start at 0.
 """
 
 import argparse
@@ -27,6 +28,20 @@ AXES = [("odom_noise", "odometry noise scale"), ("misclassification", "misclassi
 METRIC_LABEL = {"ate_rmse": "ATE RMSE (m)", "rot_rmse": "rotation RMSE (rad)", "da_accuracy": "DA accuracy",
                 "da_accuracy_real": "DA accuracy (true landmarks)",
                 "landmarks_estimated": "landmarks estimated", "time_s": "time (s)"}
+
+
+# Metrics that are fractions in [0, 1]: drawn on 0..1 so that 0.999 against 1.0 looks as small as it is.
+FRACTION_METRICS = {"da_accuracy", "da_accuracy_real", "pairwise_precision", "pairwise_recall", "clutter_rejected"}
+
+
+def set_value_limits(ax, rows, metric):
+    """Fixed limits: 0..1 for fractions; from 0 to a little above the largest value otherwise."""
+    if metric in FRACTION_METRICS:
+        ax.set_ylim(0.0, 1.03)
+        return
+    finite = [float(r[metric]) for r in rows if r.get(metric, "") != "" and math.isfinite(float(r[metric]))]
+    top = max(finite) if finite else 1.0
+    ax.set_ylim(0.0, top * 1.08 if top > 0 else 1.0)
 
 
 def read_rows(path):
@@ -66,6 +81,7 @@ def draw_panel(ax, rows, axis, axis_label, metric, methods):
     ax.set_xticks(range(len(levels)))
     ax.set_xticklabels(levels)
     ax.set_xlim(-0.6, len(levels) - 0.4)
+    set_value_limits(ax, rows, metric)
     ax.set_xlabel(axis_label)
     ax.set_ylabel(METRIC_LABEL.get(metric, metric))
     ax.grid(axis="y", alpha=0.3)
@@ -93,8 +109,10 @@ def main():
         for ax, (axis, label), tag in zip(axes, AXES, "ab"):
             draw_panel(ax, rows, axis, label, metric, methods)
             ax.set_title(f"({tag}) {label}")
-        fig.legend(handles=legend_handles(methods), loc="upper center", ncol=len(methods), frameon=False)
-        fig.tight_layout(rect=(0, 0, 1, 0.9))
+        fig.suptitle(f"Robustness study: {METRIC_LABEL.get(metric, metric)} over paired seeds", y=0.99)
+        fig.legend(handles=legend_handles(methods), loc="upper center", bbox_to_anchor=(0.5, 0.93),
+                   ncol=len(methods), frameon=False)
+        fig.tight_layout(rect=(0, 0, 1, 0.84))
         out = os.path.join(args.folder, f"robustness_{metric}.png")
         fig.savefig(out, dpi=120)
         plt.close(fig)
@@ -105,8 +123,11 @@ def main():
             draw_panel(axes[r][c], rows, axis, label, metric, methods)
             if r == 0:
                 axes[r][c].set_title(f"({'ab'[c]}) {label}")
-    fig.legend(handles=legend_handles(methods), loc="upper center", ncol=len(methods), frameon=False)
-    fig.tight_layout(rect=(0, 0, 1, 1 - 0.45 / (3.2 * len(metrics))))
+    height = 3.2 * len(metrics)
+    fig.suptitle("Robustness study over paired seeds (box: quartiles of the seeds)", y=1 - 0.05 / height)
+    fig.legend(handles=legend_handles(methods), loc="upper center", bbox_to_anchor=(0.5, 1 - 0.35 / height),
+               ncol=len(methods), frameon=False)
+    fig.tight_layout(rect=(0, 0, 1, 1 - 0.8 / height))
     out = os.path.join(args.folder, "robustness.png")
     fig.savefig(out, dpi=120)
     plt.close(fig)

@@ -1,14 +1,19 @@
 #!/usr/bin/env python3
 """Draw a semslam run folder: estimated and true trajectory, landmarks, and covariance ellipses.
 
-Usage: plot_run.py RUN_DIR [--out FILE.png] [--every N] [--sigma S]
+Usage: plot_run.py RUN_DIR [--compare OTHER_RUN_DIR ...] [--out FILE.png] [--every N] [--sigma S] [--title T]
 
 Reads the files described in src/semslam/io/RunFolder.h: trajectory.tum, truth.tum (optional), landmarks.csv,
 landmarks_truth.csv (optional), covariances.csv (optional). Ellipses are drawn at S standard deviations
 (default 2) for every N-th pose (default: about 40 ellipses along the trajectory) and every landmark.
+With --compare, the trajectories of other runs on the same log are drawn beside it (each its own colour and dash
+pattern). A box in a corner gives each run's numbers from its metrics.json (ATE, DA accuracy, landmarks), as
+`semslam run` and `semslam demo` print them. The truth is drawn wherever truth.tum has it (a log may have true
+poses on some steps only).
 """
 import argparse
 import csv
+import json
 import math
 import os
 import sys
@@ -49,6 +54,29 @@ def ellipse(x, y, cxx, cxy, cyy, sigma, **style):
                    **style)
 
 
+COMPARE_STYLES = [("tab:orange", "-."), ("tab:green", ":"), ("tab:purple", (0, (5, 1, 1, 1)))]
+
+
+def method_and_numbers(run_dir):
+    """(label, one line of numbers) from RUN_DIR/metrics.json; the folder name without it."""
+    path = os.path.join(run_dir, "metrics.json")
+    label = os.path.basename(os.path.normpath(run_dir))
+    if not os.path.exists(path):
+        return label, ""
+    with open(path) as f:
+        m = json.load(f)
+    label = m.get("method", label)
+    parts = []
+    if isinstance(m.get("ate_rmse"), (int, float)):
+        parts.append(f"ATE {m['ate_rmse']:.3f} m")
+    if isinstance(m.get("da_accuracy"), (int, float)):
+        parts.append(f"DA accuracy {m['da_accuracy']:.3f}")
+    if isinstance(m.get("landmarks_estimated"), int):
+        true = m.get("landmarks_true")
+        parts.append(f"landmarks {m['landmarks_estimated']}" + (f" (true {true})" if isinstance(true, int) else ""))
+    return label, ", ".join(parts)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("run_dir")
@@ -56,6 +84,8 @@ def main():
     parser.add_argument("--every", type=int, default=0, help="draw the ellipse of every N-th pose")
     parser.add_argument("--sigma", type=float, default=2.0, help="ellipse size in standard deviations")
     parser.add_argument("--title", default=None)
+    parser.add_argument("--compare", action="append", default=[], metavar="RUN_DIR",
+                        help="another run on the same log, drawn beside this one (repeatable)")
     args = parser.parse_args()
 
     trajectory = os.path.join(args.run_dir, "trajectory.tum")
@@ -68,7 +98,19 @@ def main():
     if os.path.exists(truth):
         true_x, true_y = read_tum(truth)
         axes.plot(true_x, true_y, "--", color="0.4", linewidth=1.2, label="true trajectory")
-    axes.plot(est_x, est_y, "-", color="tab:blue", linewidth=1.5, label="estimated trajectory")
+    label, numbers = method_and_numbers(args.run_dir)
+    summary = [f"{label}: {numbers}"] if numbers else []
+    axes.plot(est_x, est_y, "-", color="tab:blue", linewidth=1.5,
+              label=f"estimated trajectory ({label})" if args.compare else "estimated trajectory")
+    for other, (colour, dashes) in zip(args.compare, COMPARE_STYLES * 10):
+        other_trajectory = os.path.join(other, "trajectory.tum")
+        if not os.path.exists(other_trajectory):
+            sys.exit(f"plot_run.py: {other_trajectory} not found: not a run folder")
+        other_label, other_numbers = method_and_numbers(other)
+        xs, ys = read_tum(other_trajectory)
+        axes.plot(xs, ys, color=colour, linestyle=dashes, linewidth=1.3, label=f"estimated trajectory ({other_label})")
+        if other_numbers:
+            summary.append(f"{other_label}: {other_numbers}")
 
     true_landmarks = read_csv(os.path.join(args.run_dir, "landmarks_truth.csv"))
     if true_landmarks:
@@ -102,7 +144,10 @@ def main():
     axes.set_ylabel("y [m]")
     axes.grid(True, linewidth=0.3)
     axes.legend(loc="best", fontsize=9)
-    axes.set_title(args.title or os.path.basename(os.path.normpath(args.run_dir)))
+    if summary:
+        axes.text(0.01, 0.01, "\n".join(summary), transform=axes.transAxes, fontsize=8, va="bottom", ha="left",
+                  family="monospace", bbox={"boxstyle": "round", "facecolor": "white", "alpha": 0.85})
+    axes.set_title(args.title or os.path.basename(os.path.normpath(args.run_dir)), fontsize=10)
     out = args.out or os.path.join(args.run_dir, "run.png")
     figure.tight_layout()
     figure.savefig(out, dpi=120)

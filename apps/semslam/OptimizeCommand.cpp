@@ -5,8 +5,10 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "Commands.h"
+#include "semslam/core/ProgressBar.h"
 #include "semslam/io/PoseGraphFile.h"
 #include "semslam/io/PoseGraphOptimizationReport.h"
 #include "semslam/run/PoseGraphOptimization.h"
@@ -20,6 +22,7 @@ struct OptimizeArguments {
   std::string out;
   std::string report;
   std::string stepTimes;
+  bool quiet = false;
   PoseGraphOptimizationOptions options;
 };
 
@@ -55,6 +58,13 @@ void printMarginals(const JointMarginal& joint) {
 
 void run(OptimizeArguments arguments) {
   arguments.options.solver = arguments.solver == "lm" ? SolverType::LevenbergMarquardt : SolverType::GaussNewton;
+  // The incremental replay shows its progress per step (core/ProgressBar.h); the number of steps is known once
+  // the file is read, at the first step.
+  std::optional<ProgressBar> progress;
+  arguments.options.progress = [&progress, quiet = arguments.quiet](int done, int total) {
+    if (!progress) progress.emplace("optimize --incremental", total, quiet);
+    progress->update(done);
+  };
   const PoseGraphOptimizationReport report = optimizePoseGraphFile(arguments.options);
   if (report.replay) {
     printReplay(report);
@@ -110,6 +120,7 @@ void addOptimizeCommand(CLI::App& app) {
   command->add_flag("!--no-final-convergence", options.finalConvergence,
                     "--incremental: skip the final Gauss-Newton convergence of the whole graph");
   command->add_option("--step-times", arguments->stepTimes, "--incremental: write the time of every step as CSV");
+  command->add_flag("--quiet", arguments->quiet, "--incremental: no progress line");
   command->callback([arguments]() { run(*arguments); });
 }
 

@@ -17,6 +17,7 @@
 #include "semslam/io/MeasurementLogFile.h"
 #include "semslam/run/KnownTrajectoryCeiling.h"
 #include "semslam/run/RunMethod.h"
+#include "semslam/solve/UnconstrainedSystem.h"
 
 namespace semslam::cli {
 namespace {
@@ -29,6 +30,7 @@ struct RunArguments {
   bool noCovariances = false;
   bool onKnownTrajectory = false;
   double poseErrorScale = 0.0;
+  bool quiet = false;
   MethodOptions options;
 };
 
@@ -51,24 +53,24 @@ void run(RunArguments arguments) {
   options.method = parseMethod(arguments.method);
   if (!arguments.smoother.empty()) options.smoother = parseSmootherKind(arguments.smoother);
   options.poseCovariances = !arguments.noCovariances;
-  // Paper A's run shows its progress (seconds to minutes per step with sampled weights); paper B's runs are fast.
-  std::unique_ptr<ProgressBar> progress;
-  if (isHybrid(options.method)) {
-    progress = std::make_unique<ProgressBar>("run " + arguments.method, static_cast<int>(log.steps.size()),
-                                             ProgressBar::Mode::Always);
-  }
+  // Every method shows its progress per step (core/ProgressBar.h: in place on a terminal, a line every few
+  // seconds elsewhere); --quiet silences it.
+  ProgressBar progress("run " + arguments.method, static_cast<int>(log.steps.size()), arguments.quiet);
   MethodRun result;
   try {
     if (arguments.onKnownTrajectory) {
       result = runOnKnownTrajectory(log, options, arguments.poseErrorScale,
                                     static_cast<std::uint32_t>(options.hybrid.seed));
     } else {
-      result = runMethod(log, options, [&progress](int done, int) {
-        if (progress) progress->update(done);
-      });
+      result = runMethod(log, options, [&progress](int done, int) { progress.update(done); });
     }
   } catch (const std::invalid_argument& error) {
     throw InputError(arguments.in, 0, error.what());
+  } catch (const UnconstrainedSystemError& error) {  // the log leaves a variable free: say what would hold it
+    throw InputError(arguments.in, 0,
+                     std::string(error.what()) +
+                         " (In a measurement log the header's initial_pose is the prior on the first pose and "
+                         "landmark_priors hold known landmarks; docs/measurement-log.md.)");
   }
   writeMethodRun(arguments.out, result);
   printSummary(arguments, log, result);
@@ -102,6 +104,7 @@ void addRunCommand(CLI::App& app) {
                       "hybrid: seed of the Monte Carlo draws; --pose-error-scale: seed of the pose errors")
       ->capture_default_str();
   addHybridOptions(command, arguments->options.hybrid);
+  command->add_flag("--quiet", arguments->quiet, "no progress line");
   command->callback([arguments]() { run(*arguments); });
 }
 

@@ -45,6 +45,7 @@ struct AliasedOptions {
   std::optional<double> alpha;
   std::string out;
   std::string writeScenario;
+  bool quiet = false;
 };
 
 void runAliased(const AliasedOptions& options) {
@@ -73,8 +74,8 @@ void runAliased(const AliasedOptions& options) {
                 static_cast<unsigned long long>(options.seed), options.out.c_str());
     return;
   }
-  // One line rewritten in place on a terminal, a line per tenth otherwise.
-  ProgressBar progress("simulate aliased2d tracks", options.tracks, ProgressBar::Mode::Always);
+  // One line rewritten in place on a terminal, a line every few seconds otherwise (core/ProgressBar.h).
+  ProgressBar progress("simulate aliased2d tracks", options.tracks, options.quiet);
   writeAliased2dTrackFolder(options.out, scenario, options.seed, options.tracks, options.steps,
                             [&progress](int done, int) { progress.update(done); });
   std::printf("wrote %d tracks of %d steps (scenario '%s', seed %llu) to %s/\n", options.tracks, options.steps,
@@ -100,6 +101,7 @@ void addAliased(CLI::App& simulate) {
   command->add_option("--out", options->out, "the log (one track) or a folder of track_NNN.jsonl (several)");
   command->add_option("--write-scenario", options->writeScenario,
                       "write the scenario in effect (after --alpha) as JSON to this file");
+  command->add_flag("--quiet", options->quiet, "no progress line");
   command->callback([options]() { runAliased(*options); });
 }
 
@@ -107,13 +109,21 @@ void addAliased(CLI::App& simulate) {
 
 struct SemanticCliOptions {
   std::string out;
+  bool quiet = false;
   std::uint64_t seed = 1;
   SemanticTruthOptions truth;
   SemanticSimOptions sim;
 };
 
 void runSemantic(const SemanticCliOptions& options) {
-  const SemanticSimulation simulation = simulateSemanticRun(options.truth, options.sim, options.seed);
+  // A long trajectory file (KITTI 00: 4541 poses) takes seconds: one progress line (core/ProgressBar.h), made at
+  // the first step, when the number of steps is known.
+  std::optional<ProgressBar> progress;
+  const SemanticSimulation simulation =
+      simulateSemanticRun(options.truth, options.sim, options.seed, [&progress, &options](int done, int total) {
+        if (!progress) progress.emplace("simulate semantic", total, options.quiet);
+        progress->update(done);
+      });
   const MeasurementLog& log = simulation.log;
   writeMeasurementLog(options.out, log);
   std::size_t detections = 0;
@@ -179,6 +189,7 @@ void addSemantic(CLI::App& simulate) {
   command->add_option("--odom-covariance-scale", s.odomCovarianceScale,
                       "covariance stated in the log = scale^2 x baseline (default: the noise scale)");
   command->add_option("--clutter", s.clutter, "mean false detections per step (Poisson)")->capture_default_str();
+  command->add_flag("--quiet", o.quiet, "no progress line");
   command->callback([options]() { runSemantic(*options); });
 }
 

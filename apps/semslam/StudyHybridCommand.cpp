@@ -19,6 +19,7 @@ namespace {
 struct StudyHybridArguments {
   std::string scenario;  ///< a scenario file; empty: the built-in layout
   std::string out;
+  bool quiet = false;
   HybridStudyOptions options;
 };
 
@@ -30,7 +31,7 @@ void runStudy(StudyHybridArguments arguments) {
   }
   const auto start = std::chrono::steady_clock::now();
   ProgressBar progress("study hybrid", options.tracks * static_cast<int>(options.alphas.size()) * 2,
-                       ProgressBar::Mode::Always);
+                       arguments.quiet);
   const std::vector<HybridStudyRow> rows =
       runHybridStudy(options, [&progress](int done, int) { progress.update(done); });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -57,6 +58,7 @@ void addStudyHybridCommand(CLI::App& study) {
   addHybridOptions(hybrid, o.hybrid);
   hybrid->add_option("--threads", o.threads, "worker threads")->check(CLI::Range(1, 64))->capture_default_str();
   hybrid->add_option("--out", arguments->out, "output folder")->required();
+  hybrid->add_flag("--quiet", arguments->quiet, "no progress line");
   hybrid->callback([arguments] { runStudy(*arguments); });
 }
 

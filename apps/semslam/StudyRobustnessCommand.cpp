@@ -112,10 +112,7 @@ void runRobustness(const RobustnessArguments& arguments) {
   const int runs =
       static_cast<int>((options.noiseScales.size() + options.misclassificationRates.size()) * options.methods.size()) *
       options.seeds;
-  ProgressBar bar("study robustness", runs,
-                  arguments.quiet      ? ProgressBar::Mode::Never
-                  : arguments.progress ? ProgressBar::Mode::Always
-                                       : ProgressBar::Mode::Auto);
+  ProgressBar bar("study robustness", runs, arguments.quiet);
   options.progress = [&bar](int done, int) { bar.update(done); };
   RobustnessStudy study;
   try {
@@ -168,8 +165,9 @@ void addStudyRobustnessCommand(CLI::App& study) {
                       "the methods' model misclassification rate is max(p, this) (0: the exact rate)")
       ->check(CLI::Range(0.0, 0.5))
       ->capture_default_str();
-  command->add_flag("--quiet", a->quiet, "no progress bar, no warnings");
-  command->add_flag("--progress", a->progress, "show progress even when stderr is not a terminal");
+  command->add_flag("--quiet", a->quiet, "no progress line, no warnings");
+  command->add_flag("--progress", a->progress,
+                    "accepted for old scripts: progress is shown on and off a terminal unless --quiet");
   command->callback([a]() { runRobustness(*a); });
 }
 

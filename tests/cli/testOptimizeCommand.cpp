@@ -151,3 +151,46 @@ TEST(OptimizeCommand, IncrementalReplayReachesTheBatchOptimumAndReportsStepTimes
   EXPECT_GE(onlineChi2, optimum * (1.0 - 1e-9));
   EXPECT_LE(onlineChi2, optimum * 1.01);
 }
+
+TEST(OptimizeCommand, AGraphThatLeavesVerticesFreeSaysWhichAndHowToHoldThem) {
+  TempDir dir;
+  struct Case {
+    const char* name;
+    std::string contents;
+    const char* expected;  // names the free vertices
+  };
+  // (A vertex that no edge names is simply left where it is: it is not part of the system.)
+  const std::vector<Case> cases = {
+      // Two separate parts: the first vertex holds 0-1, nothing holds 2-3.
+      {"two_parts.g2o",
+       "VERTEX_SE2 0 0 0 0\nVERTEX_SE2 1 1 0 0\nVERTEX_SE2 2 5 0 0\nVERTEX_SE2 3 6.5 0 0\n"
+       "EDGE_SE2 0 1 1 0 0 100 0 0 100 0 400\nEDGE_SE2 2 3 1 0 0 100 0 0 100 0 400\n",
+       "the 2 variables 2, 3"},
+      // The triangle of kGoodGraph, held by vertex 0, and a separate pair with no anchor.
+      {"triangle_and_pair.g2o",
+       std::string(kGoodGraph) + "VERTEX_SE2 7 9 0 0\nVERTEX_SE2 8 10.5 0 0\nEDGE_SE2 7 8 1 0 0 100 0 0 100 0 400\n",
+       "the 2 variables 7, 8"},
+  };
+  for (const Case& c : cases) {
+    const std::string input = dir.file(c.name, c.contents);
+    for (const char* mode : {" --solver gn", " --incremental"}) {
+      const auto run = runSemslam("optimize " + input + mode);
+      EXPECT_EQ(run.exitCode, 2) << c.name << mode << ": " << run.output;
+      EXPECT_NE(run.output.find(c.name), std::string::npos) << run.output;
+      EXPECT_NE(run.output.find(c.expected), std::string::npos) << run.output;
+      EXPECT_NE(run.output.find("FIX line"), std::string::npos) << run.output;
+      EXPECT_EQ(run.output.find("CHOLMOD"), std::string::npos) << run.output;
+    }
+  }
+}
+
+TEST(OptimizeCommand, TheIncrementalReplayShowsProgressUnlessQuiet) {
+  TempDir dir;
+  const std::string input = dir.file("progress.g2o", kGoodGraph);
+  const auto shown = runSemslam("optimize " + input + " --incremental");
+  ASSERT_EQ(shown.exitCode, 0) << shown.output;
+  EXPECT_NE(shown.output.find("optimize --incremental: 3/3"), std::string::npos) << shown.output;
+  const auto quiet = runSemslam("optimize " + input + " --incremental --quiet");
+  ASSERT_EQ(quiet.exitCode, 0) << quiet.output;
+  EXPECT_EQ(quiet.output.find("optimize --incremental:"), std::string::npos) << quiet.output;
+}

@@ -135,3 +135,44 @@ TEST(StudyCommand, SmallHybridStudyWritesSummary) {
   EXPECT_EQ(header, "alpha,model,entropy,det_cov,err_wmax,err_wavg");
   fs::remove_all(dir);
 }
+
+TEST(RunCommand, EveryMethodShowsProgressUnlessQuiet) {
+  const fs::path dir = freshDirectory("semslam_run_progress");
+  const fs::path log = dir / "run.jsonl";
+  ASSERT_EQ(runSemslam("simulate semantic --steps 20 --seed 4 --out \"" + log.string() + "\"").exitCode, 0);
+  for (const std::string method : {"known", "ml", "gpda", "mm", "mm-nh"}) {
+    const std::string command = "run --method " + method + " --in \"" + log.string() + "\" --out \"" +
+                                (dir / method).string() + "\" --no-covariances";
+    // Off a terminal (the output here is a pipe) the last line comes at the end of a run however short it is.
+    const auto shown = runSemslam(command);
+    ASSERT_EQ(shown.exitCode, 0) << shown.output;
+    EXPECT_NE(shown.output.find("run " + method + ": 21/21"), std::string::npos) << shown.output;
+    const auto quiet = runSemslam(command + " --quiet");
+    ASSERT_EQ(quiet.exitCode, 0) << quiet.output;
+    EXPECT_EQ(quiet.output.find("run " + method + ":"), std::string::npos) << quiet.output;
+  }
+  fs::remove_all(dir);
+}
+
+TEST(RunCommand, AHybridRunWithoutAPriorOnTheFirstPoseSaysHowToSupplyIt) {
+  const fs::path dir = freshDirectory("semslam_run_no_prior");
+  const fs::path log = dir / "track.jsonl";
+  ASSERT_EQ(runSemslam("simulate aliased2d --steps 3 --seed 2 --out \"" + log.string() + "\"").exitCode, 0);
+  // The same log with the header's initial_pose removed.
+  std::ifstream in(log);
+  std::string header, rest, line;
+  std::getline(in, header);
+  while (std::getline(in, line)) rest += line + "\n";
+  in.close();
+  nlohmann::ordered_json headerJson = nlohmann::ordered_json::parse(header);
+  ASSERT_TRUE(headerJson.contains("initial_pose"));
+  headerJson.erase("initial_pose");
+  const fs::path stripped = dir / "no_prior.jsonl";
+  std::ofstream(stripped) << headerJson.dump() << "\n" << rest;
+  const auto result = runSemslam("run --method hybrid --in \"" + stripped.string() + "\" --out \"" +
+                                 (dir / "out").string() + "\" --samples 50");
+  EXPECT_EQ(result.exitCode, 2) << result.output;
+  EXPECT_NE(result.output.find("no initial pose prior"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("\"initial_pose\""), std::string::npos) << result.output;
+  fs::remove_all(dir);
+}

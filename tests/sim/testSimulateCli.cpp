@@ -39,7 +39,7 @@ TEST(SimulateCli, SeveralTracksGoToAFolder) {
   const auto result = runSemslam("simulate aliased2d --tracks 12 --steps 10 --out " + quoted(out));
   ASSERT_EQ(result.exitCode, 0) << result.output;
   EXPECT_NE(result.output.find("simulate aliased2d tracks: 12/12"), std::string::npos)
-      << result.output;  // progress (core/ProgressBar.h, one line per tenth off a terminal)
+      << result.output;  // progress (core/ProgressBar.h: its last line off a terminal)
   for (int track = 0; track < 12; ++track) {
     char name[32];
     std::snprintf(name, sizeof name, "track_%03d.jsonl", track);
@@ -103,6 +103,17 @@ TEST(SimulateCli, SemanticIsDeterministicAcrossRuns) {
     ASSERT_EQ(runSemslam("simulate semantic " + options + " --seed 10 --out " + quoted(b)).exitCode, 0);
     EXPECT_NE(test::fileBytes(a), test::fileBytes(b)) << options;
   }
+}
+
+TEST(SimulateCli, SemanticShowsProgressUnlessQuiet) {
+  ScratchFolder folder;
+  const std::string out = folder.file("p.jsonl");
+  const auto shown = runSemslam("simulate semantic --steps 50 --out " + quoted(out));
+  ASSERT_EQ(shown.exitCode, 0) << shown.output;
+  EXPECT_NE(shown.output.find("simulate semantic: 51/51"), std::string::npos) << shown.output;
+  const auto quiet = runSemslam("simulate semantic --steps 50 --quiet --out " + quoted(out));
+  ASSERT_EQ(quiet.exitCode, 0) << quiet.output;
+  EXPECT_EQ(quiet.output.find("simulate semantic:"), std::string::npos) << quiet.output;
 }
 
 TEST(SimulateCli, SemanticFromKitti) {

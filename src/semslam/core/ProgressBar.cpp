@@ -6,39 +6,51 @@
 
 namespace semslam {
 
-ProgressBar::ProgressBar(std::string label, int total, Mode mode, std::FILE* stream)
+ProgressBar::ProgressBar(std::string label, int total, bool quiet, std::FILE* stream, Seconds period)
     : label_(std::move(label)),
       total_(std::max(total, 1)),
+      quiet_(quiet),
       stream_(stream),
       terminal_(isatty(fileno(stream)) != 0),
+      period_(period),
       start_(std::chrono::steady_clock::now()),
-      lastDraw_(start_ - std::chrono::seconds(1)) {
-  enabled_ = mode == Mode::Always || (mode == Mode::Auto && terminal_);
-}
+      lastDraw_(start_) {}
 
 void ProgressBar::update(int done) {
-  if (!enabled_) return;
+  if (quiet_ || finished_) return;
   done = std::clamp(done, 0, total_);
   const auto now = std::chrono::steady_clock::now();
-  const double elapsed = std::chrono::duration<double>(now - start_).count();
   const bool last = done == total_;
+  const auto sinceDraw = now - lastDraw_;
+  // On a terminal the first draw comes at once; off it, the first plain line after one period.
+  const bool due = terminal_ ? (sinceDraw >= std::chrono::milliseconds(100) || lastDraw_ == start_)
+                             : sinceDraw >= period_;
+  if (!last && !due) return;
+  lastDraw_ = now;
+  finished_ = last;
+  const double elapsed = std::chrono::duration<double>(now - start_).count();
   if (terminal_) {
-    if (!last && now - lastDraw_ < std::chrono::milliseconds(100)) return;
-    lastDraw_ = now;
-    constexpr int kWidth = 30;
-    const int filled = done * kWidth / total_;
-    std::string bar(filled, '#');
-    bar.append(kWidth - filled, '.');
-    std::fprintf(stream_, "\r%s [%s] %d/%d  %.1f s", label_.c_str(), bar.c_str(), done, total_, elapsed);
-    if (done > 0 && !last) std::fprintf(stream_, ", ~%.0f s left  ", elapsed * (total_ - done) / done);
-    if (last) std::fprintf(stream_, "              \n");
+    drawBar(done, elapsed, last);
   } else {
-    const int tenths = done * 10 / total_;
-    if (tenths <= printedTenths_) return;
-    printedTenths_ = tenths;
-    std::fprintf(stream_, "%s: %d/%d  %.1f s\n", label_.c_str(), done, total_, elapsed);
+    printLine(done, elapsed, last);
   }
   std::fflush(stream_);
+}
+
+void ProgressBar::drawBar(int done, double elapsed, bool last) {
+  constexpr int kWidth = 30;
+  const int filled = static_cast<int>(static_cast<long long>(done) * kWidth / total_);
+  std::string bar(filled, '#');
+  bar.append(kWidth - filled, '.');
+  std::fprintf(stream_, "\r%s [%s] %d/%d  %.1f s", label_.c_str(), bar.c_str(), done, total_, elapsed);
+  if (done > 0 && !last) std::fprintf(stream_, ", ~%.0f s left  ", elapsed * (total_ - done) / done);
+  if (last) std::fprintf(stream_, "              \n");
+}
+
+void ProgressBar::printLine(int done, double elapsed, bool last) {
+  std::fprintf(stream_, "%s: %d/%d  %.1f s", label_.c_str(), done, total_, elapsed);
+  if (done > 0 && !last) std::fprintf(stream_, ", ~%.0f s left", elapsed * (total_ - done) / done);
+  std::fprintf(stream_, "\n");
 }
 
 }  // namespace semslam

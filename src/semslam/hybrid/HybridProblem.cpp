@@ -14,7 +14,10 @@ namespace {
 
 const LogHeader& checked(const LogHeader& header) {
   if (header.dimension != 2) throw InputError("hybrid belief: only 2D logs are supported");
-  if (!header.initialPose) throw InputError("hybrid belief: the log has no initial pose prior");
+  if (!header.initialPose) throw InputError(
+        "hybrid belief: the log has no initial pose prior, which holds the first pose (the hybrid belief's weights "
+        "need a proper prior): add \"initial_pose\": {\"mean\": [x, y, theta], \"covariance\": 3x3} to the "
+        "log's header line (docs/measurement-log.md)");
   if (header.landmarkPriors.empty()) {
     throw InputError("hybrid belief: the log has no landmark priors (paper A needs the known, uncertain map; "
                      "convert with --map-prior)");

@@ -13,15 +13,19 @@ RunOutput runOutputFrom(const MeasurementLog& log, const RunResult& result,
   RunOutput output;
   output.dimension = log.header.dimension;
   const int d = log.header.dimension;
-  std::vector<double> times;
+  std::vector<double> times, trueTimes;
   std::vector<SE3> poses, truePoses;
   for (std::size_t k = 0; k < result.poses.size(); ++k) {
     times.push_back(log.steps[k].time);
     poses.push_back(toSE3(result.poses[k]));
-    if (log.steps[k].truePose) truePoses.push_back(toSE3(*log.steps[k].truePose));
+    if (log.steps[k].truePose) {
+      trueTimes.push_back(log.steps[k].time);
+      truePoses.push_back(toSE3(*log.steps[k].truePose));
+    }
   }
   output.trajectory = Trajectory(times, poses);
-  if (!truePoses.empty() && truePoses.size() == poses.size()) output.truth = Trajectory(times, truePoses);
+  // The truth wherever the log has it: a log with true poses on some steps only still gets them, at their times.
+  if (!truePoses.empty()) output.truth = Trajectory(trueTimes, truePoses);
   for (const Matrix& covariance : result.poseCovariances) {
     output.posePositionCovariances.push_back(covariance.topLeftCorner(d, d));
   }

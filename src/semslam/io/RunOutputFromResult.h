@@ -2,7 +2,7 @@
 // Building a run folder's contents (RunFolder.h) from what a method reports (models/RunResult.h)
 // and the log it ran on: every method writes its folder through this one function.
 //
-//   trajectory      result.poses with the steps' times;  truth: the steps' true poses, when every step has one;
+//   trajectory      result.poses with the steps' times;  truth: the true poses of the steps that have one, at their times;
 //   covariances     the position block (top-left d × d, translation first) of each result.poseCovariances entry;
 //   landmarks       result.landmarks: the most probable class and its probability (-1 without a class belief),
 //                   with `landmarkCovariances` (by landmark index, position block) where given;

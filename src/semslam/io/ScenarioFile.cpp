@@ -1,13 +1,11 @@
 #include "semslam/io/ScenarioFile.h"
 
 #include <algorithm>
-#include <charconv>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
-#include "semslam/core/ExactNumber.h"
 #include "semslam/io/AtomicFile.h"
 #include "semslam/core/InputError.h"
 #include "semslam/io/JsonField.h"
@@ -120,32 +118,22 @@ void readSensor(const JsonField& field, Aliased2dSensor& sensor) {
 
 // ---- writing ----
 
-std::string number(double value) {
-  if (value == 0.0) return "0";  // also -0
-  // The shortest text that reads back to the same double; plain decimals (0.0005, not 5e-04) while they stay short.
-  std::string text = shortestExactNumber(value);
-  if (text.find('e') != std::string::npos) {
-    char buffer[400];
-    const auto fixed = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed);
-    if (fixed.ec == std::errc() && fixed.ptr - buffer <= 12) text.assign(buffer, fixed.ptr);
-  }
-  return text;
+// nlohmann writes every number as the shortest text that reads back to the same double
+// (https://json.nlohmann.me/api/basic_json/dump/), so a written scenario reads back equal.
+
+Json vectorJson(const Vector& v) {
+  Json array = Json::array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) array.push_back(v(i));
+  return array;
 }
 
-template <class V>
-std::string vectorText(const V& v) {
-  std::string text = "[";
-  for (Eigen::Index i = 0; i < v.size(); ++i) text += (i ? ", " : "") + number(v(i));
-  return text + "]";
-}
-
-std::string poseText(const SE2& pose) { return vectorText(Vector3(pose.x(), pose.y(), pose.theta())); }
+Json poseJson(const SE2& pose) { return vectorJson(Vector3(pose.x(), pose.y(), pose.theta())); }
 
 template <class M>
-std::string matrixText(const M& m) {
-  std::string text = "[";
-  for (Eigen::Index i = 0; i < m.rows(); ++i) text += (i ? ", " : "") + vectorText(Vector(m.row(i).transpose()));
-  return text + "]";
+Json matrixJson(const M& m) {
+  Json rows = Json::array();
+  for (Eigen::Index i = 0; i < m.rows(); ++i) rows.push_back(vectorJson(Vector(m.row(i).transpose())));
+  return rows;
 }
 
 }  // namespace
@@ -218,48 +206,36 @@ Aliased2dScenario readAliased2dScenario(const std::string& path) {
 
 std::string aliased2dScenarioToJson(const Aliased2dScenario& scenario) {
   validateAliased2dScenario(scenario);
-  std::string out;
-  out += "{\n";
-  out += "  \"format\": \"" + std::string(kScenarioFormat) + "\",\n";
-  out += "  \"version\": " + std::to_string(kScenarioVersion) + ",\n";
-  out += "  \"kind\": \"aliased2d\",\n";
-  out += "  \"name\": " + Json(scenario.name).dump() + ",\n";
-  out += "  \"classes\": " + std::to_string(scenario.classes) + ",\n";
-  out += "  \"objects\": [\n";
-  for (std::size_t i = 0; i < scenario.objects.size(); ++i) {
-    const Aliased2dObject& object = scenario.objects[i];
-    out += "    {\"id\": " + std::to_string(object.id) + ", \"class\": " + std::to_string(object.classIndex) +
-           ", \"pose\": " + poseText(object.pose) + "}" + (i + 1 < scenario.objects.size() ? "," : "") + "\n";
+  Json root;  // ordered: the keys in the order of docs/simulators.md
+  root["format"] = kScenarioFormat;
+  root["version"] = kScenarioVersion;
+  root["kind"] = "aliased2d";
+  root["name"] = scenario.name;
+  root["classes"] = scenario.classes;
+  Json objects = Json::array();
+  for (const Aliased2dObject& object : scenario.objects) {
+    objects.push_back({{"id", object.id}, {"class", object.classIndex}, {"pose", poseJson(object.pose)}});
   }
-  out += "  ],\n";
-  out += "  \"start\": " + poseText(scenario.start) + ",\n";
+  root["objects"] = std::move(objects);
+  root["start"] = poseJson(scenario.start);
   const Aliased2dPriors& priors = scenario.priors;
-  out += "  \"priors\": {\n";
-  out += "    \"initial_pose_covariance\": " + matrixText(priors.initialPoseCovariance) + ",\n";
-  out += "    \"object_covariance\": " + matrixText(priors.objectCovariance) + ",\n";
-  out += std::string("    \"means\": \"") + (priors.means == PriorMeans::Sampled ? "sampled" : "truth") + "\"\n";
-  out += "  },\n";
+  root["priors"] = {{"initial_pose_covariance", matrixJson(priors.initialPoseCovariance)},
+                    {"object_covariance", matrixJson(priors.objectCovariance)},
+                    {"means", priors.means == PriorMeans::Sampled ? "sampled" : "truth"}};
   const Aliased2dMotion& motion = scenario.motion;
-  out += "  \"motion\": {\n";
-  out += "    \"covariance\": " + matrixText(motion.covariance) + ",\n";
-  out += "    \"step_length\": " + number(motion.stepLength) + ",\n";
-  out += "    \"max_turn\": " + number(motion.maxTurn) + ",\n";
-  out += "    \"arena\": {\"center\": " + vectorText(motion.arenaCenter) +
-         ", \"radius\": " + number(motion.arenaRadius) + "},\n";
-  out += "    \"clearance\": " + number(motion.clearance) + ",\n";
-  out += "    \"time_step\": " + number(motion.timeStep) + "\n";
-  out += "  },\n";
+  root["motion"] = {{"covariance", matrixJson(motion.covariance)},
+                    {"step_length", motion.stepLength},
+                    {"max_turn", motion.maxTurn},
+                    {"arena", {{"center", vectorJson(motion.arenaCenter)}, {"radius", motion.arenaRadius}}},
+                    {"clearance", motion.clearance},
+                    {"time_step", motion.timeStep}};
   const Aliased2dSensor& sensor = scenario.sensor;
-  out += "  \"sensor\": {\n";
-  out += "    \"body_to_sensor\": " + poseText(sensor.bodyToSensor) + ",\n";
-  out += "    \"max_range\": " + number(sensor.maxRange) + ",\n";
-  out += "    \"field_of_view\": " + number(sensor.fieldOfView) + ",\n";
-  out += "    \"covariance\": " + matrixText(sensor.covariance) + "\n";
-  out += "  },\n";
-  out += "  \"classifier\": {\"alpha\": " + number(scenario.alpha) + ", \"sharpness\": " + number(scenario.sharpness) +
-         "}\n";
-  out += "}\n";
-  return out;
+  root["sensor"] = {{"body_to_sensor", poseJson(sensor.bodyToSensor)},
+                    {"max_range", sensor.maxRange},
+                    {"field_of_view", sensor.fieldOfView},
+                    {"covariance", matrixJson(sensor.covariance)}};
+  root["classifier"] = {{"alpha", scenario.alpha}, {"sharpness", scenario.sharpness}};
+  return root.dump(2) + "\n";
 }
 
 void writeAliased2dScenario(const std::string& path, const Aliased2dScenario& scenario) {

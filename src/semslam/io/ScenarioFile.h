@@ -22,9 +22,9 @@
 // positive definite, and every rule of validateAliased2dScenario (Aliased2dScenario.h). Problems found after
 // parsing name the field's path ("sensor.max_range: must be >= 0 ...") with line 0 (the file as a whole).
 //
-// Writing gives a fixed layout (2-space indent, one object per line, matrices one row per line, numbers in the
-// shortest form that reads back to the same double), atomically; reading what was written gives an equal
-// scenario and writing that again the same bytes.
+// Writing builds the document with nlohmann-json and prints it with a 2-space indent (keys in the order above,
+// numbers in the shortest form that reads back to the same double), atomically; reading what was written gives an
+// equal scenario and writing that again the same bytes.
 
 #include <string>
 

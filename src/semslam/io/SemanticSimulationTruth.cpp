@@ -71,7 +71,7 @@ SemanticTruth semanticSimulationTruth(const SemanticTruthOptions& options, std::
 namespace semslam {
 
 SemanticSimulation simulateSemanticRun(const SemanticTruthOptions& truthOptions, SemanticSimOptions sim,
-                                       std::uint64_t seed) {
+                                       std::uint64_t seed, const std::function<void(int, int)>& progress) {
   try {
     validateSemanticSimOptions(sim);
   } catch (const std::invalid_argument& error) {
@@ -79,7 +79,7 @@ SemanticSimulation simulateSemanticRun(const SemanticTruthOptions& truthOptions,
   }
   SemanticTruth truth = semanticSimulationTruth(truthOptions, seed);
   sim.description = truth.description;
-  return {simulateSemantic(truth.trajectory, sim, seed), std::move(truth.description)};
+  return {simulateSemantic(truth.trajectory, sim, seed, progress), std::move(truth.description)};
 }
 
 }  // namespace semslam

@@ -7,6 +7,7 @@
 // In io/ because it reads trajectory files.
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -47,6 +48,8 @@ struct SemanticSimulation {
 
 /// `semslam simulate semantic`: validates `sim` (InputError naming the first bad option), chooses the truth as
 /// above and simulates the log along it (sim/SemanticSimulator.h) with the truth's description as its source.
-SemanticSimulation simulateSemanticRun(const SemanticTruthOptions& truth, SemanticSimOptions sim, std::uint64_t seed);
+/// `progress` as in simulateSemantic.
+SemanticSimulation simulateSemanticRun(const SemanticTruthOptions& truth, SemanticSimOptions sim, std::uint64_t seed,
+                                       const std::function<void(int done, int total)>& progress = {});
 
 }  // namespace semslam

@@ -10,6 +10,7 @@
 #include "semslam/io/PoseGraphReplay.h"
 #include "semslam/run/PoseGraphReplayLoop.h"
 #include "semslam/solve/Marginals.h"
+#include "semslam/solve/UnconstrainedSystem.h"
 
 namespace semslam {
 
@@ -58,11 +59,12 @@ void replayIncrementally(const PoseGraphOptimizationOptions& options, const Pose
   IncrementalSmoother smoother(options.incrementalParams);
   PoseGraphReplayStatistics statistics;
   double reeliminated = 0.0, relinearized = 0.0, solved = 0.0;
-  const ReplayLoopTimes times = replayPoseGraph(replay, smoother, [&](std::size_t, const IncrementalSmoother& s) {
+  const ReplayLoopTimes times = replayPoseGraph(replay, smoother, [&](std::size_t k, const IncrementalSmoother& s) {
     reeliminated += s.lastUpdate().reeliminatedVariables;
     relinearized += s.lastUpdate().relinearizedVariables;
     solved += s.lastUpdate().solvedCliques;
     statistics.fullReorderings += s.lastUpdate().fullReordering ? 1 : 0;
+    if (options.progress) options.progress(static_cast<int>(k + 1), static_cast<int>(replay.size()));
   });
   if (options.finalConvergence) {
     OptimizerParams params;
@@ -93,6 +95,10 @@ void replayIncrementally(const PoseGraphOptimizationOptions& options, const Pose
 
 }  // namespace
 
+const char* const kPoseGraphGaugeHint =
+    "(A pose-graph file is held in place by its first vertex, or by the vertices of its FIX lines: every other "
+    "vertex needs a chain of edges to one of them; a separate part needs a FIX line of its own.)";
+
 PoseGraphOptimizationReport optimizePoseGraphFile(const PoseGraphOptimizationOptions& options) {
   const PoseGraphFile file = readPoseGraph(options.file, parseGraphFormat(options.format));
   std::vector<Key> marginalKeys;
@@ -105,10 +111,14 @@ PoseGraphOptimizationReport optimizePoseGraphFile(const PoseGraphOptimizationOpt
                                                                        : "gn";
   report.variables = file.initial.size();
   report.edges = file.factors.size();
-  if (options.incremental) {
-    replayIncrementally(options, file, marginalKeys, report);
-  } else {
-    optimizeBatch(options, file, marginalKeys, report);
+  try {
+    if (options.incremental) {
+      replayIncrementally(options, file, marginalKeys, report);
+    } else {
+      optimizeBatch(options, file, marginalKeys, report);
+    }
+  } catch (const UnconstrainedSystemError& error) {  // the file's graph leaves something free: its author can fix it
+    throw InputError(options.file, 0, std::string(error.what()) + " " + kPoseGraphGaugeHint);
   }
   // chi2 over the file's own edges (the anchoring prior excluded).
   report.initialChi2 = file.factors.chi2(file.initial);

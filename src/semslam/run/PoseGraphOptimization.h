@@ -8,6 +8,7 @@
 // and, for the --marginals ids, their marginal and joint covariance at the final estimate. The report and its JSON
 // are io/PoseGraphOptimizationReport.h.
 
+#include <functional>
 #include <string>
 
 #include "semslam/io/PoseGraphOptimizationReport.h"
@@ -26,6 +27,8 @@ struct PoseGraphOptimizationOptions {
   bool incremental = false;
   bool finalConvergence = true;               ///< incremental
   IncrementalSmootherParams incrementalParams;  ///< incremental
+  /// incremental: called after each replayed step with (steps done, steps in all); the CLI draws core/ProgressBar.
+  std::function<void(int done, int total)> progress;
 };
 
 /// Throws InputError for an unreadable file or a bad --marginals id list.

@@ -115,7 +115,8 @@ std::string sourceText(const SemanticSimOptions& options, int dimension, std::ui
 
 template <class PoseT>
 MeasurementLog simulate(const std::vector<PoseT>& poses, const std::vector<double>& times,
-                        const SemanticSimOptions& options, std::uint64_t seed) {
+                        const SemanticSimOptions& options, std::uint64_t seed,
+                        const std::function<void(int, int)>& progress) {
   using T = Traits<PoseT>;
   constexpr int d = T::kDim;
   std::mt19937 landmarkStream = simulationStream(seed, 0, SimStream::Landmarks);
@@ -215,6 +216,7 @@ MeasurementLog simulate(const std::vector<PoseT>& poses, const std::vector<doubl
     }
     sortDetectionsByBearing(step.detections);
     log.steps.push_back(std::move(step));
+    if (progress) progress(static_cast<int>(k + 1), static_cast<int>(poses.size()));
   }
   return log;
 }
@@ -259,7 +261,8 @@ void validateSemanticSimOptions(const SemanticSimOptions& o) {
   check(o.clutter == 0.0 || o.maxRange > 0.0, "clutter needs a positive maximum range (uniform in a bounded region)");
 }
 
-MeasurementLog simulateSemantic(const SimTrajectory& truth, const SemanticSimOptions& options, std::uint64_t seed) {
+MeasurementLog simulateSemantic(const SimTrajectory& truth, const SemanticSimOptions& options, std::uint64_t seed,
+                                const std::function<void(int, int)>& progress) {
   validateSemanticSimOptions(options);
   check(truth.poses.size() >= 2, "the trajectory needs at least two poses");
   check(truth.times.size() == truth.poses.size(), "one time per pose is needed");
@@ -271,14 +274,14 @@ MeasurementLog simulateSemantic(const SimTrajectory& truth, const SemanticSimOpt
       check(std::holds_alternative<SE2>(pose), "the trajectory mixes SE2 and SE3 poses");
       poses.push_back(std::get<SE2>(pose));
     }
-    return simulate(poses, truth.times, options, seed);
+    return simulate(poses, truth.times, options, seed, progress);
   }
   std::vector<SE3> poses;
   for (const Pose& pose : truth.poses) {
     check(std::holds_alternative<SE3>(pose), "the trajectory mixes SE2 and SE3 poses");
     poses.push_back(std::get<SE3>(pose));
   }
-  return simulate(poses, truth.times, options, seed);
+  return simulate(poses, truth.times, options, seed, progress);
 }
 
 }  // namespace semslam

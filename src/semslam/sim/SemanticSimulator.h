@@ -28,6 +28,7 @@
 // origin, as in paper B's experiments).
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -70,6 +71,8 @@ void validateSemanticSimOptions(const SemanticSimOptions& options);
 
 /// The log of one run. Throws std::invalid_argument for invalid options or a trajectory with fewer than two
 /// poses, mixed pose types or times that do not increase.
-MeasurementLog simulateSemantic(const SimTrajectory& truth, const SemanticSimOptions& options, std::uint64_t seed);
+/// `progress`, when set, is called after each step with (steps done, steps in all).
+MeasurementLog simulateSemantic(const SimTrajectory& truth, const SemanticSimOptions& options, std::uint64_t seed,
+                                const std::function<void(int done, int total)>& progress = {});
 
 }  // namespace semslam

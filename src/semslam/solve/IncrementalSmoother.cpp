@@ -9,6 +9,7 @@
 
 #include "semslam/solve/ConstrainedOrdering.h"
 #include "semslam/solve/SymbolicElimination.h"
+#include "semslam/solve/UnconstrainedSystem.h"
 
 namespace semslam {
 
@@ -20,10 +21,6 @@ std::vector<std::vector<int>>& reuseLists(std::vector<std::vector<int>>& lists, 
   for (int i = 0; i < count; ++i) lists[i].clear();
   return lists;
 }
-
-const char* const kNotPositiveDefinite =
-    "IncrementalSmoother: the information matrix is not positive definite: some variable is not constrained by "
-    "the factors (a gauge freedom without a prior, or a landmark seen too few times)";
 
 }  // namespace
 
@@ -497,7 +494,7 @@ void IncrementalSmoother::eliminateCliques(const std::vector<int>& cliqueIds, co
       scatter(c.separator, c.conditional->marginalInformation, c.conditional->marginalVector);
     }
     auto conditional = std::make_shared<CliqueConditional>();
-    if (!CliqueConditional::eliminate(A, b, nf, *conditional)) throw std::runtime_error(kNotPositiveDefinite);
+    if (!CliqueConditional::eliminate(A, b, nf, *conditional)) throwUnconstrained(factors(), theta_);
     clique.conditional = std::move(conditional);
     factorEntries_ += entries(clique);
   }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "semslam/solve/UnconstrainedSystem.h"
+
 namespace semslam {
 
 Marginals::Marginals(const FactorGraph& graph, const Values& linearizationPoint)
@@ -10,7 +12,7 @@ Marginals::Marginals(const FactorGraph& graph, const Values& linearizationPoint)
   system_.assemble(linearizationPoint);
   cholesky_.analyze(system_.hessian());
   if (!cholesky_.factorize(system_.hessian())) {
-    throw std::runtime_error("marginals: the information matrix is not positive definite");
+    throwUnconstrained(graph, linearizationPoint);
   }
 }
 

@@ -7,14 +7,11 @@
 
 #include "semslam/solve/NormalEquations.h"
 #include "semslam/solve/SparseCholesky.h"
+#include "semslam/solve/UnconstrainedSystem.h"
 
 namespace semslam {
 
 namespace {
-
-const char* const kNotPositiveDefinite =
-    "the information matrix is not positive definite: some variable is not constrained by the factors "
-    "(a gauge freedom without a prior, or a landmark seen too few times)";
 
 double maxNorm(const Vector& v) { return v.size() == 0 ? 0.0 : v.cwiseAbs().maxCoeff(); }
 
@@ -46,8 +43,8 @@ bool gradientConverged(const OptimizerParams& params, double gradient, Optimizat
   return result.converged;
 }
 
-void gaussNewton(NormalEquations& system, SparseCholesky& cholesky, const OptimizerParams& params,
-                 OptimizationResult& result) {
+void gaussNewton(const FactorGraph& graph, NormalEquations& system, SparseCholesky& cholesky,
+                 const OptimizerParams& params, OptimizationResult& result) {
   Values& x = result.values;
   double chi2 = result.initialChi2;
   double gradient = result.initialGradientNorm;
@@ -58,7 +55,8 @@ void gaussNewton(NormalEquations& system, SparseCholesky& cholesky, const Optimi
       result.stopReason = "maximum number of iterations";
       break;
     }
-    if (!cholesky.factorize(system.hessian())) throw std::runtime_error(kNotPositiveDefinite);
+    // Not positive definite: some variable is not fixed by the factors; say which, and what would fix it.
+    if (!cholesky.factorize(system.hessian())) throwUnconstrained(graph, x);
     const Vector step = cholesky.solve(Vector(-system.gradient()));
     ++result.iterations;
     Values candidate = system.retract(x, step);
@@ -145,7 +143,7 @@ OptimizationResult optimize(const FactorGraph& graph, const Values& initial, con
   SparseCholesky cholesky;
   cholesky.analyze(system.hessian());
   if (params.solver == SolverType::GaussNewton) {
-    gaussNewton(system, cholesky, params, result);
+    gaussNewton(graph, system, cholesky, params, result);
   } else {
     levenbergMarquardt(graph, system, cholesky, params, result);
   }

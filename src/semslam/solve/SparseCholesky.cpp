@@ -5,8 +5,10 @@
 namespace semslam {
 
 SparseCholesky::SparseCholesky() {
-  // A matrix that is not positive definite is reported through factorize()'s result, not printed.
-  llt_.cholmod().print = 1;
+  // A matrix that is not positive definite is reported through factorize()'s result, never printed: CHOLMOD's
+  // print level 0 silences its own messages ("CHOLMOD error: not positive definite ..."), which would reach the
+  // user before the explanation the solvers give (solve/UnconstrainedSystem.h).
+  llt_.cholmod().print = 0;
   llt_.setMode(Eigen::CholmodAuto);
   // LLᵀ also in the simplicial case: an LDLᵀ factorization would accept a negative pivot, and a matrix that is
   // not positive definite must be reported (an unconstrained variable), never solved.

@@ -4,15 +4,14 @@
 #include <chrono>
 #include <filesystem>
 #include <map>
-#include <mutex>
 #include <sstream>
-#include <thread>
 
 #include "semslam/core/ExactNumber.h"
 #include "semslam/eval/HypothesisMetrics.h"
 #include "semslam/run/RunMethod.h"
 #include "semslam/io/AtomicFile.h"
 #include "semslam/sim/Aliased2dSimulator.h"
+#include "semslam/study/ParallelJobs.h"
 
 namespace semslam {
 namespace {
@@ -97,31 +96,10 @@ std::vector<HybridStudyRow> runHybridStudy(const HybridStudyOptions& options,
     }
   }
   std::vector<HybridStudyRow> rows(jobs.size());
-  std::atomic<std::size_t> next{0};
-  std::mutex mutex;
-  int done = 0;
-  std::exception_ptr failure;
-  auto worker = [&] {
-    for (std::size_t i = next++; i < jobs.size(); i = next++) {
-      try {
-        rows[i] = runOne(options, jobs[i].alpha, jobs[i].track, jobs[i].classifier);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(mutex);
-        if (!failure) failure = std::current_exception();
-        next = jobs.size();
-        return;
-      }
-      std::lock_guard<std::mutex> lock(mutex);
-      ++done;
-      if (progress) progress(done, static_cast<int>(jobs.size()));
-    }
-  };
-  const int threads = std::max(1, options.threads);
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (std::thread& thread : pool) thread.join();
-  if (failure) std::rethrow_exception(failure);
+  runParallelJobs(
+      jobs.size(), options.threads,
+      [&](std::size_t i) { rows[i] = runOne(options, jobs[i].alpha, jobs[i].track, jobs[i].classifier); },
+      progress);
   return rows;
 }
 

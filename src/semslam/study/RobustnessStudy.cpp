@@ -1,7 +1,6 @@
 #include "semslam/study/RobustnessStudy.h"
 
 #include <algorithm>
-#include <atomic>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -11,10 +10,10 @@
 #include <mutex>
 #include <sstream>
 #include <stdexcept>
-#include <thread>
 #include <tuple>
 
 #include "semslam/run/RunMethod.h"
+#include "semslam/study/ParallelJobs.h"
 
 namespace semslam {
 
@@ -103,10 +102,8 @@ RobustnessStudy runRobustnessStudy(const MeasurementLog& log, const RobustnessSt
   const int methods = static_cast<int>(options.methods.size());
   const int totalRuns = static_cast<int>(cells.size()) * methods;
   std::vector<std::vector<RobustnessRow>> results(cells.size());
-  std::atomic<std::size_t> next{0};
-  std::mutex progressMutex;
+  std::mutex progressMutex;  // progress counts runs, several per cell (job)
   int finished = 0;
-  std::exception_ptr perturbationError;
 
   auto runCell = [&](std::size_t index) {
     const RobustnessCell& cell = cells[index];
@@ -158,30 +155,8 @@ RobustnessStudy runRobustnessStudy(const MeasurementLog& log, const RobustnessSt
     }
   };
 
-  auto worker = [&]() {
-    for (;;) {
-      const std::size_t index = next.fetch_add(1);
-      if (index >= cells.size()) return;
-      try {
-        runCell(index);
-      } catch (...) {  // a log that cannot be perturbed: the same for every cell, so stop
-        std::lock_guard<std::mutex> lock(progressMutex);
-        if (!perturbationError) perturbationError = std::current_exception();
-        next = cells.size();
-        return;
-      }
-    }
-  };
-
-  const int threads = std::min<int>(options.threads, static_cast<int>(cells.size()));
-  if (threads <= 1) {
-    worker();
-  } else {
-    std::vector<std::thread> pool;
-    for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
-    for (std::thread& thread : pool) thread.join();
-  }
-  if (perturbationError) std::rethrow_exception(perturbationError);
+  // A log that cannot be perturbed fails the same way in every cell: the first such error stops the study.
+  runParallelJobs(cells.size(), options.threads, runCell);
 
   RobustnessStudy study;
   for (std::vector<RobustnessRow>& rows : results) {
