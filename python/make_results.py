@@ -16,6 +16,7 @@ import sys
 import tempfile
 
 import results_association
+import results_association_defaults
 import results_max_mixtures
 
 POSE_GRAPHS = [
@@ -242,7 +243,8 @@ def hybrid_section(semslam, data, scratch, python):
     return lines
 
 
-SECTIONS = ["pose-graphs", "evo", "datasets", "hybrid", "max-mixtures", "robustness", "association"]
+SECTIONS = ["pose-graphs", "evo", "datasets", "hybrid", "max-mixtures", "robustness", "association",
+            "association-defaults"]
 
 
 def section_lines(name, semslam, data, scratch):
@@ -262,6 +264,8 @@ def section_lines(name, semslam, data, scratch):
         body = results_max_mixtures.robustness_sections(semslam, data, scratch, lambda command: shown(command, data))
     elif name == "association":
         body = results_association.association_section(semslam, data, scratch, lambda command: shown(command, data))
+    elif name == "association-defaults":
+        body = results_association_defaults.association_defaults_section(semslam, data, scratch)
     else:
         sys.exit(f"make_results.py: unknown section {name} ({', '.join(SECTIONS)})")
     return [f"<!-- section:{name} -->"] + body + [f"<!-- end:{name} -->", ""]
