@@ -18,13 +18,14 @@ COLUMNS = ["ate_rmse", "da_accuracy_real", "pairwise_precision", "pairwise_recal
            "landmarks_merged", "landmarks_split", "landmarks_estimated", "time_s"]
 
 
-def _run(command):
+def run_checked(command):
+    """Runs a command of a results section; exits with its output when it fails."""
     result = subprocess.run(command, capture_output=True, text=True)
     if result.returncode != 0:
-        sys.exit(f"results_association.py: {' '.join(command)} failed:\n{result.stdout}{result.stderr}")
+        sys.exit(f"make_results.py: {' '.join(command)} failed:\n{result.stdout}{result.stderr}")
 
 
-def _metrics(folder):
+def read_metrics(folder):
     with open(os.path.join(folder, "metrics.json")) as f:
         return json.load(f)
 
@@ -69,7 +70,7 @@ def association_section(semslam, data, scratch, shown):
             jobs.append((v, robot, log, convert_args, runs))
     commands_shown = []
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, (os.cpu_count() or 2))) as pool:
-        list(pool.map(lambda job: _run([semslam, "convert", "mrclam", folder, "--out", job[2], "--robot",
+        list(pool.map(lambda job: run_checked([semslam, "convert", "mrclam", folder, "--out", job[2], "--robot",
                                         str(job[1]), "--keyframe-period", "1"] + job[3]), jobs))
         tasks = []
         for v, robot, log, convert_args, runs in jobs:
@@ -77,7 +78,7 @@ def association_section(semslam, data, scratch, shown):
                 out = os.path.join(scratch, f"association_v{v}_r{robot}_{r}")
                 command = [semslam, "run", "--method", method, "--in", log, "--out", out, "--no-covariances"] + extra
                 tasks.append((v, robot, label, out, command))
-        list(pool.map(lambda task: _run(task[4]), tasks))
+        list(pool.map(lambda task: run_checked(task[4]), tasks))
     for v, (title, convert_args, runs) in enumerate(VARIANTS):
         lines += [f"### {title}", "",
                   "| robot | method | ATE [m] | da_accuracy_real | pairwise precision | pairwise recall | "
@@ -86,7 +87,7 @@ def association_section(semslam, data, scratch, shown):
         for task in tasks:
             if task[0] != v:
                 continue
-            m = _metrics(task[3])
+            m = read_metrics(task[3])
             lines.append(f"| {task[1]} | {task[2]} | " + " | ".join(_cell(m.get(c)) for c in COLUMNS) + " |")
         lines.append("")
         commands_shown.append(shown([semslam, "convert", "mrclam", folder, "--out", "rN.jsonl", "--robot", "N",
@@ -120,7 +121,7 @@ def kitti_generalisation_section(semslam, data, scratch, shown):
         if not os.path.exists(trajectory):
             continue
         log = os.path.join(scratch, f"kitti{sequence}-seed{seed}.jsonl")
-        _run(kitti_simulation(semslam, trajectory, log, seed))
+        run_checked(kitti_simulation(semslam, trajectory, log, seed))
         for method in KITTI_METHODS:
             out = os.path.join(scratch, f"kitti{sequence}-seed{seed}-{method}")
             jobs.append((sequence, seed, method, out,
@@ -128,8 +129,8 @@ def kitti_generalisation_section(semslam, data, scratch, shown):
     if not jobs:
         return lines[:2] + ["KITTI odometry poses are absent: section skipped.", ""]
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, (os.cpu_count() or 2))) as pool:
-        list(pool.map(lambda job: _run(job[4]), jobs))
-    results = {(j[0], j[1], j[2]): _metrics(j[3]) for j in jobs}
+        list(pool.map(lambda job: run_checked(job[4]), jobs))
+    results = {(j[0], j[1], j[2]): read_metrics(j[3]) for j in jobs}
     met = 0
     for sequence, seed in KITTI_LOGS:
         if (sequence, seed, "known") not in results:

@@ -8,12 +8,10 @@ classes, 10 %) and the KITTI 00 semantic simulation of the max-mixtures section 
 run's metrics.json; the commands are printed.
 """
 import concurrent.futures
-import json
 import os
 import statistics
-import subprocess
-import sys
 
+from results_association import read_metrics, run_checked
 from results_max_mixtures import kitti_simulation
 
 # (flag, values); the default of each is in the list, so its row is the defaults' run.
@@ -24,17 +22,6 @@ DEFAULTS = {"--unassigned-rate": "1", "--confirmations": "2", "--patience": "10"
 ROBOTS = [1, 2, 3, 4, 5]
 
 
-def _run(command):
-    result = subprocess.run(command, capture_output=True, text=True)
-    if result.returncode != 0:
-        sys.exit(f"results_association_defaults.py: {' '.join(command)} failed:\n{result.stdout}{result.stderr}")
-
-
-def _metrics(folder):
-    with open(os.path.join(folder, "metrics.json")) as f:
-        return json.load(f)
-
-
 def _logs(semslam, data, scratch):
     """(name, log path) of every log present; converted or simulated into `scratch`."""
     logs = []
@@ -42,19 +29,19 @@ def _logs(semslam, data, scratch):
     if os.path.isdir(mrclam):
         for robot in ROBOTS:
             log = os.path.join(scratch, f"defaults_r{robot}.jsonl")
-            _run([semslam, "convert", "mrclam", mrclam, "--out", log, "--robot", str(robot), "--classes", "3",
+            run_checked([semslam, "convert", "mrclam", mrclam, "--out", log, "--robot", str(robot), "--classes", "3",
                   "--misclassification", "0.1", "--keyframe-period", "1"])
             logs.append((f"MRCLAM r{robot}", log))
     woods = os.path.join(data, "utias-lost-in-the-woods")
     if os.path.isdir(woods):
         log = os.path.join(scratch, "defaults_litw.jsonl")
-        _run([semslam, "convert", "utias-lost-in-the-woods", woods, "--out", log, "--classes", "3",
+        run_checked([semslam, "convert", "utias-lost-in-the-woods", woods, "--out", log, "--classes", "3",
               "--misclassification", "0.1", "--keyframe-period", "1"])
         logs.append(("Lost in the Woods", log))
     trajectory = os.path.join(data, "kitti-odometry-poses", "00.txt")
     if os.path.exists(trajectory):
         log = os.path.join(scratch, "defaults_kitti00.jsonl")
-        _run(kitti_simulation(semslam, trajectory, log))
+        run_checked(kitti_simulation(semslam, trajectory, log))
         logs.append(("KITTI 00", log))
     return logs
 
@@ -89,7 +76,7 @@ def association_defaults_section(semslam, data, scratch):
             jobs.append((s, name, out, [semslam, "run", "--method", "mm-nh", "--in", log, "--out", out,
                                         "--no-covariances"] + flags))
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, (os.cpu_count() or 2))) as pool:
-        list(pool.map(lambda job: _run(job[3]), jobs))
+        list(pool.map(lambda job: run_checked(job[3]), jobs))
     names = [name for name, _ in logs]
     mrclam = [name for name in names if name.startswith("MRCLAM")]
     lines += ["`mm-nh`, one setting changed at a time from the defaults. Cells: `da_accuracy_real` / ATE [m]; "
@@ -100,7 +87,7 @@ def association_defaults_section(semslam, data, scratch):
         cells, accuracies = [], []
         for name in names:
             job = next(j for j in jobs if j[0] == s and j[1] == name)
-            m = _metrics(job[2])
+            m = read_metrics(job[2])
             cells.append(f"{m['da_accuracy_real']:.3f} / {m['ate_rmse']:.3f}")
             if name in mrclam:
                 accuracies.append(m["da_accuracy_real"])
