@@ -38,9 +38,10 @@
 //      drops it (its detections are left on no landmark) or a merge test puts it into a mapped landmark (its
 //      detections move there); a confirmed landmark seen at the step is tested the same way against the other
 //      confirmed ones, and of a duplicate pair the newer merges into the older (§5c; its variable gets the weak
-//      prior back); the graph edits of a step are one smoother update. Then exclusion is repaired
-//      (§4): while two of the step's mixtures use one landmark at the estimate, the worse of them loses that
-//      component, and the step is re-solved. finish() drops what is still provisional and repairs every step.
+//      prior back); the graph edits of a step are one smoother update; with labelSplit, a landmark seen at the step
+//      whose labels say it holds two objects then splits (§5d, LandmarkSplit.h; one more update). Then exclusion is
+//      repaired (§4): while two of the step's mixtures use one landmark at the estimate, the worse of them loses
+//      that component, and the step is re-solved. finish() drops what is still provisional and repairs every step.
 // Decisions where paper B is silent are in docs/max-mixtures.md.
 //
 // Invariants: landmark indices are dense, 0-based, in creation order, and are the landmark ids of every output
