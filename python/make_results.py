@@ -16,6 +16,7 @@ import sys
 import tempfile
 
 import results_association
+import results_kitti_tracking
 import results_max_mixtures
 
 POSE_GRAPHS = [
@@ -242,7 +243,7 @@ def hybrid_section(semslam, data, scratch, python):
     return lines
 
 
-SECTIONS = ["pose-graphs", "evo", "datasets", "hybrid", "max-mixtures", "robustness", "association"]
+SECTIONS = ["pose-graphs", "evo", "datasets", "hybrid", "max-mixtures", "robustness", "association", "kitti-tracking"]
 
 
 def section_lines(name, semslam, data, scratch):
@@ -262,6 +263,9 @@ def section_lines(name, semslam, data, scratch):
         body = results_max_mixtures.robustness_sections(semslam, data, scratch, lambda command: shown(command, data))
     elif name == "association":
         body = results_association.association_section(semslam, data, scratch, lambda command: shown(command, data))
+    elif name == "kitti-tracking":
+        body = results_kitti_tracking.kitti_tracking_section(semslam, data, scratch,
+                                                             lambda command: shown(command, data), sys.executable)
     else:
         sys.exit(f"make_results.py: unknown section {name} ({', '.join(SECTIONS)})")
     return [f"<!-- section:{name} -->"] + body + [f"<!-- end:{name} -->", ""]
