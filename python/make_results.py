@@ -17,6 +17,7 @@ import tempfile
 
 import results_association
 import results_association_defaults
+import results_kitti_tracking
 import results_max_mixtures
 
 POSE_GRAPHS = [
@@ -244,7 +245,7 @@ def hybrid_section(semslam, data, scratch, python):
 
 
 SECTIONS = ["pose-graphs", "evo", "datasets", "hybrid", "max-mixtures", "robustness", "association",
-            "association-defaults"]
+            "association-defaults", "kitti-tracking"]
 
 
 def section_lines(name, semslam, data, scratch):
@@ -266,6 +267,9 @@ def section_lines(name, semslam, data, scratch):
         body = results_association.association_section(semslam, data, scratch, lambda command: shown(command, data))
     elif name == "association-defaults":
         body = results_association_defaults.association_defaults_section(semslam, data, scratch)
+    elif name == "kitti-tracking":
+        body = results_kitti_tracking.kitti_tracking_section(semslam, data, scratch,
+                                                             lambda command: shown(command, data), sys.executable)
     else:
         sys.exit(f"make_results.py: unknown section {name} ({', '.join(SECTIONS)})")
     return [f"<!-- section:{name} -->"] + body + [f"<!-- end:{name} -->", ""]

@@ -112,6 +112,40 @@ TEST(AssociationErrors, ClutterRejectedIsTheShareOfClutterOnNoLandmark) {
   EXPECT_EQ(e.accuracyReal, 1.0);
 }
 
+TEST(AssociationErrors, HeaderExampleClutterSplitsIntoMovingAndFalsePositive) {
+  // Clutter with a source (a moving object) on ∅ and on estimate 1, clutter without one on ∅.
+  std::vector<DetectionAssociation> d = {{a, 1}, {kClutter, std::nullopt, 3}, {kClutter, 1, 3},
+                                         {kClutter, std::nullopt, std::nullopt}};
+  const auto e = evaluate(d);
+  EXPECT_EQ(e.clutterMoving, 2u);
+  EXPECT_EQ(e.clutterMovingUnassigned, 1u);
+  EXPECT_DOUBLE_EQ(e.clutterRejectedMoving, 0.5);
+  EXPECT_EQ(e.clutterFalsePositive, 1u);
+  EXPECT_EQ(e.clutterFalsePositiveUnassigned, 1u);
+  EXPECT_DOUBLE_EQ(e.clutterRejectedFalsePositive, 1.0);
+  EXPECT_DOUBLE_EQ(e.clutterRejected, 2.0 / 3.0);  // the count-weighted mean of the two
+}
+
+TEST(AssociationErrors, ClutterWithoutSourcesIsAllFalsePositives) {
+  // A log without clutter sources (every simulated log): the false-positive share is clutter_rejected, the
+  // moving one undefined.
+  const auto e = evaluate(make({{a, 1}, {kClutter, std::nullopt}, {kClutter, 1}, {kClutter, std::nullopt}}));
+  EXPECT_EQ(e.clutterRejectedFalsePositive, e.clutterRejected);
+  EXPECT_DOUBLE_EQ(e.clutterRejected, 2.0 / 3.0);
+  EXPECT_TRUE(std::isnan(e.clutterRejectedMoving));
+  EXPECT_EQ(e.clutterMoving, 0u);
+}
+
+TEST(AssociationErrors, OnlyMovingClutterLeavesTheFalsePositiveShareUndefined) {
+  const auto e = evaluate({{kClutter, 4, 0}, {kClutter, 4, 0}, {kClutter, std::nullopt, 1}, {kClutter, 4, 0}});
+  EXPECT_DOUBLE_EQ(e.clutterRejectedMoving, 0.25);
+  EXPECT_EQ(e.clutterRejectedMoving, e.clutterRejected);
+  EXPECT_TRUE(std::isnan(e.clutterRejectedFalsePositive));
+  // Moving clutter on an estimate is not a real detection: no pair, no accuracy.
+  EXPECT_EQ(e.realTotal, 0u);
+  EXPECT_EQ(e.pairsSameEstimate, 0u);
+}
+
 TEST(AssociationErrors, UndefinedRatiosAreNaN) {
   const auto onlyClutter = evaluate(make({{kClutter, std::nullopt}}));
   EXPECT_TRUE(std::isnan(onlyClutter.accuracyReal));

@@ -45,6 +45,10 @@ RunMetrics filledMetrics() {
   m.daTotal = 81;
   m.daNull = 3;
   m.daClutter = 2;
+  m.daAccuracyReal = 0.9;
+  m.clutterRejected = 0.75;
+  m.clutterRejectedMoving = 2.0 / 3.0;
+  m.clutterRejectedFalsePositive = 1.0;
   m.landmarksEstimated = 18;
   m.landmarksTrue = 17;
   m.landmarkCountError = 1;
@@ -280,6 +284,45 @@ TEST(RunEvaluation, UnknownTruthChangesNoMetric) {
   }
   EXPECT_EQ(runMetricsToJson(evaluateRun(onlyUnknown, result).metrics),
             runMetricsToJson(evaluateRun(noTruth, result).metrics));
+}
+
+TEST(RunEvaluation, ClutterSplitsByItsSource) {
+  // smallLog's clutter (step 0, no source: a false positive, rejected) plus two detections of a moving object
+  // (clutter_source 5) in step 1, one rejected and one put on landmark 8.
+  MeasurementLog log = smallLog();
+  for (int i = 0; i < 2; ++i) {
+    Detection moving = detection(kNotALandmark);
+    moving.clutterSource = 5;
+    log.steps[1].detections.push_back(moving);
+  }
+  RunResult result;
+  result.method = "mm-nh";
+  for (const TimeStep& step : log.steps) result.poses.push_back(std::get<SE2>(*step.truePose));
+  result.associations = {{7, std::nullopt}, {8, std::nullopt, 8}, {7, 7}, {std::nullopt}};
+  result.landmarks = {{7, Point2(5.0, 0.0), Vector2(0.9, 0.1)}, {8, Point2(0.0, 5.0), Vector2(0.8, 0.2)}};
+  const RunMetrics m = evaluateRun(log, result).metrics;
+  EXPECT_EQ(m.daClutter, 3);
+  EXPECT_DOUBLE_EQ(m.clutterRejected, 2.0 / 3.0);
+  EXPECT_DOUBLE_EQ(m.clutterRejectedMoving, 0.5);
+  EXPECT_DOUBLE_EQ(m.clutterRejectedFalsePositive, 1.0);
+  const Json json = Json::parse(runMetricsToJson(m));
+  EXPECT_DOUBLE_EQ(json["clutter_rejected_moving"].get<double>(), 0.5);
+  EXPECT_DOUBLE_EQ(json["clutter_rejected_false_positive"].get<double>(), 1.0);
+
+  // Without the sources (an old log), every clutter detection is a false positive and the moving share is null.
+  for (Detection& d : log.steps[1].detections) d.clutterSource.reset();
+  const RunMetrics old = evaluateRun(log, result).metrics;
+  EXPECT_DOUBLE_EQ(old.clutterRejectedFalsePositive, 2.0 / 3.0);
+  EXPECT_TRUE(std::isnan(old.clutterRejectedMoving));
+  EXPECT_TRUE(Json::parse(runMetricsToJson(old))["clutter_rejected_moving"].is_null());
+}
+
+TEST(RunMetrics, AFileWithoutTheClutterSplitReadsAsNull) {
+  // metrics.json written before the split (no clutter_rejected_moving / _false_positive keys) still reads.
+  const RunMetrics m = runMetricsFromJson(R"({"schema": "semslam.metrics/1", "clutter_rejected": 0.5})");
+  EXPECT_EQ(m.clutterRejected, 0.5);
+  EXPECT_TRUE(std::isnan(m.clutterRejectedMoving));
+  EXPECT_TRUE(std::isnan(m.clutterRejectedFalsePositive));
 }
 
 TEST(RunEvaluation, MaxMarginalMethodWithoutHybridFields) {

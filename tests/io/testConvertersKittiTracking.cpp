@@ -168,6 +168,19 @@ TEST(KittiTrackingTruth, MatchingAndTruthKindsOnHandMadeFrames) {
     EXPECT_EQ(kittiTruthKindName(t[i].kind), kittiTruthKindName(expected[i].first)) << "detection " << i;
     EXPECT_EQ(t[i].truthId, expected[i].second) << "detection " << i;
   }
+  // The confusion of detector class against label type: Car detections on the Car (0, 1, 2) and Van (3) rows, the
+  // Pedestrian detection of the cyclist and the Cyclist one on the Cyclist row, four unmatched Car detections.
+  const KittiLabelConfusion confusion = kittiLabelConfusion(detections, t, labels);
+  const auto row = [&](KittiLabelType type) { return confusion[static_cast<std::size_t>(type)]; };
+  using Row = std::array<std::size_t, kKittiClasses>;
+  EXPECT_EQ(row(KittiLabelType::Car), (Row{3, 0, 0}));
+  EXPECT_EQ(row(KittiLabelType::Van), (Row{1, 0, 0}));
+  EXPECT_EQ(row(KittiLabelType::Cyclist), (Row{0, 1, 1}));
+  EXPECT_EQ(row(KittiLabelType::DontCare), (Row{0, 0, 0}));
+  EXPECT_EQ(confusion[kKittiLabelTypes], (Row{4, 0, 0}));
+  std::size_t total = 0;
+  for (const Row& r : confusion) total += r[0] + r[1] + r[2];
+  EXPECT_EQ(total, detections.size());
 }
 
 TEST(KittiTrackingTruth, TheMatchingIsTheBestAssignmentNotGreedy) {
@@ -217,7 +230,10 @@ TEST(KittiTrackingConverter, DetectionsAndLabelsMeetInTheWorldThroughTheReferenc
   SE3 dead = std::get<SE3>(*log.steps.front().truePose);
   for (std::size_t k = 1; k < log.steps.size(); ++k) dead = dead.compose(std::get<SE3>(log.steps[k].odometry->increment));
   EXPECT_TRUE(dead.equals(std::get<SE3>(*log.steps.back().truePose), 1e-9));
-  EXPECT_EQ(stats.notes.size(), 2u);  // the truth kinds and the confusion counts
+  ASSERT_EQ(stats.notes.size(), 3u);  // the truth kinds, the 3x3 confusion counts, the full confusion
+  EXPECT_NE(stats.notes[2].find("confusion of detector class against label type"), std::string::npos);
+  EXPECT_NE(stats.notes[2].find("; unmatched: "), std::string::npos);
+  EXPECT_EQ(stats.notes[2].find("DontCare"), std::string::npos);
 }
 
 TEST(KittiTrackingConverter, SameArgumentsSameBytesAndSeededNoise) {

@@ -36,6 +36,13 @@ AssociationErrors evaluateAssociationErrors(const std::vector<DetectionAssociati
     if (d.truth == kNotALandmark) {
       ++errors.clutter;
       if (!d.estimate) ++errors.clutterUnassigned;
+      if (d.clutterSource) {
+        ++errors.clutterMoving;
+        if (!d.estimate) ++errors.clutterMovingUnassigned;
+      } else {
+        ++errors.clutterFalsePositive;
+        if (!d.estimate) ++errors.clutterFalsePositiveUnassigned;
+      }
       continue;
     }
     ++errors.realTotal;
@@ -51,6 +58,8 @@ AssociationErrors evaluateAssociationErrors(const std::vector<DetectionAssociati
   }
   errors.accuracyReal = ratio(errors.realCorrect, errors.realTotal);
   errors.clutterRejected = ratio(errors.clutterUnassigned, errors.clutter);
+  errors.clutterRejectedMoving = ratio(errors.clutterMovingUnassigned, errors.clutterMoving);
+  errors.clutterRejectedFalsePositive = ratio(errors.clutterFalsePositiveUnassigned, errors.clutterFalsePositive);
 
   for (const auto& [key, n] : perEstimateAndTruth) errors.pairsBoth += pairsOf(n);
   for (const auto& [estimate, n] : perEstimate) errors.pairsSameEstimate += pairsOf(n);

@@ -19,6 +19,13 @@
 //                       Example: truths [a a b], estimates [1 1 1]: same-estimate pairs 3, same-truth pairs 1,
 //                       both 1 → precision 1/3, recall 1.
 //   clutter_rejected    (clutter detections left unassigned) / (clutter detections); NaN without clutter.
+//   clutter_rejected_moving          the same over the clutter detections WITH a clutter source (a moving object
+//                                    the dataset identifies: a moving KITTI track, another MRCLAM robot);
+//   clutter_rejected_false_positive  the same over the clutter detections WITHOUT one (a false positive: nothing
+//                                    labelled produced it; every clutter detection of a log that has no sources).
+//                       The two partition the clutter, so clutter_rejected is their count-weighted mean; each is
+//                       NaN when its part is empty. Example: clutter [source 3 on ∅, source 3 on 1, no source on
+//                       ∅] → moving 1/2, false positive 1/1, clutter_rejected 2/3.
 //   landmarks_merged    true landmarks t with at least 2, and at least 10 %, of their detections on ONE estimate
 //                       that the matching gives to ANOTHER true landmark (t was merged into it).
 //   landmarks_split     true landmarks t with at least 2, and at least 10 %, of their detections on ONE estimate
@@ -53,6 +60,12 @@ struct AssociationErrors {
   double clutterRejected = kNaN;
   std::size_t clutter = 0;
   std::size_t clutterUnassigned = 0;
+  double clutterRejectedMoving = kNaN;         ///< over clutter with a source (DetectionAssociation::clutterSource)
+  std::size_t clutterMoving = 0;
+  std::size_t clutterMovingUnassigned = 0;
+  double clutterRejectedFalsePositive = kNaN;  ///< over clutter without a source
+  std::size_t clutterFalsePositive = 0;
+  std::size_t clutterFalsePositiveUnassigned = 0;
 
   std::size_t landmarksMerged = 0;
   std::size_t landmarksSplit = 0;

@@ -29,6 +29,9 @@ namespace semslam {
 struct DetectionAssociation {
   int truth = kNotALandmark;    ///< true landmark id ≥ 0, kNotALandmark for clutter, kUnknownTruth (left out)
   std::optional<int> estimate;  ///< estimated landmark id, or std::nullopt for the null hypothesis
+  /// Clutter only: the non-landmark object that produced it (Detection::clutterSource: a moving KITTI track, an
+  /// MRCLAM robot), or std::nullopt for a false positive. Used by AssociationErrors.h's clutter split only.
+  std::optional<int> clutterSource;
 };
 
 struct LandmarkPair {

@@ -57,6 +57,8 @@ void setAssociationErrorMetrics(RunMetrics& metrics, const AssociationErrors& er
   metrics.pairwisePrecision = errors.pairwisePrecision;
   metrics.pairwiseRecall = errors.pairwiseRecall;
   metrics.clutterRejected = errors.clutterRejected;
+  metrics.clutterRejectedMoving = errors.clutterRejectedMoving;
+  metrics.clutterRejectedFalsePositive = errors.clutterRejectedFalsePositive;
   metrics.landmarksMerged = asCount(errors.landmarksMerged);
   metrics.landmarksSplit = asCount(errors.landmarksSplit);
 }
@@ -156,7 +158,8 @@ RunEvaluation evaluateRun(const MeasurementLog& log, const RunResult& result, co
       }
       for (std::size_t j = 0; j < detections.size(); ++j) {
         if (const std::optional<int> truth = scoredTruth(detections[j].truthId)) {
-          pairs.push_back({*truth, associated[j]});
+          const std::optional<int> source = *truth == kNotALandmark ? detections[j].clutterSource : std::nullopt;
+          pairs.push_back({*truth, associated[j], source});
         }
       }
     }

@@ -35,6 +35,7 @@ struct RunMetrics {
   double daAccuracyReal = kNotApplicable;
   double pairwisePrecision = kNotApplicable, pairwiseRecall = kNotApplicable;
   double clutterRejected = kNotApplicable;
+  double clutterRejectedMoving = kNotApplicable, clutterRejectedFalsePositive = kNotApplicable;
   std::optional<long long> landmarksMerged, landmarksSplit;
 
   // Landmarks (LandmarkMetrics.h).

@@ -49,6 +49,8 @@ const std::vector<Field>& fields() {
       {"pairwise_precision", &RunMetrics::pairwisePrecision},
       {"pairwise_recall", &RunMetrics::pairwiseRecall},
       {"clutter_rejected", &RunMetrics::clutterRejected},
+      {"clutter_rejected_moving", &RunMetrics::clutterRejectedMoving},
+      {"clutter_rejected_false_positive", &RunMetrics::clutterRejectedFalsePositive},
       {"landmarks_merged", &RunMetrics::landmarksMerged},
       {"landmarks_split", &RunMetrics::landmarksSplit},
       {"landmarks_estimated", &RunMetrics::landmarksEstimated},

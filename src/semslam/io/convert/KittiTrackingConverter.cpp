@@ -76,6 +76,19 @@ double misclassificationOf(const ConfusionCounts& counts) {
   return static_cast<double>(off + 1) / static_cast<double>(total + kKittiClasses);
 }
 
+std::string fullCountsText(const KittiLabelConfusion& counts) {
+  std::string text = "confusion of detector class against label type (rows label, columns detected Car "
+                     "Pedestrian Cyclist):";
+  for (int r = 0; r <= kKittiLabelTypes; ++r) {
+    if (r < kKittiLabelTypes && static_cast<KittiLabelType>(r) == KittiLabelType::DontCare) continue;
+    text += (r == 0 ? " " : "; ") +
+            (r < kKittiLabelTypes ? kittiLabelTypeName(static_cast<KittiLabelType>(r)) : std::string("unmatched")) +
+            ":";
+    for (const std::size_t count : counts[static_cast<std::size_t>(r)]) text += " " + std::to_string(count);
+  }
+  return text;
+}
+
 std::string countsText(const ConfusionCounts& counts) {
   std::string text;
   for (std::size_t r = 0; r < kKittiClasses; ++r) {
@@ -174,6 +187,7 @@ MeasurementLog convertKittiTracking(const std::string& folder, const ConvertOpti
       ++ownCounts[static_cast<std::size_t>(*c)][static_cast<std::size_t>(kept[i].detectedClass)];
     }
   }
+  const KittiLabelConfusion fullCounts = kittiLabelConfusion(kept, truth, sequence.labels);
   const bool heldOut = !kitti.confusionFile.empty();
   const ConfusionCounts modelCounts = heldOut ? readConfusionCounts(kitti.confusionFile) : ownCounts;
   const double misclassification = misclassificationOf(modelCounts);
@@ -261,6 +275,7 @@ MeasurementLog convertKittiTracking(const std::string& folder, const ConvertOpti
   if (stats != nullptr) {
     stats->notes.push_back(kinds.str() + " (before keyframing)");
     stats->notes.push_back(confusion);
+    stats->notes.push_back(fullCountsText(fullCounts));
   }
   return log;
 }

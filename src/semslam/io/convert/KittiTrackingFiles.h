@@ -36,6 +36,7 @@ const std::array<std::string, kKittiClasses>& kittiClassNames();
 
 /// A label's type as KITTI writes it.
 enum class KittiLabelType { Car, Van, Truck, Pedestrian, PersonSitting, Cyclist, Tram, Misc, DontCare };
+inline constexpr int kKittiLabelTypes = 9;
 
 struct KittiLabel {
   std::size_t line = 0;  ///< in the label file, for messages

@@ -82,6 +82,18 @@ std::optional<int> kittiClassOfLabel(KittiLabelType type) {
   }
 }
 
+KittiLabelConfusion kittiLabelConfusion(const std::vector<KittiDetection>& detections,
+                                        const std::vector<KittiDetectionTruth>& truth,
+                                        const std::vector<KittiLabel>& labels) {
+  KittiLabelConfusion counts{};
+  for (std::size_t i = 0; i < detections.size(); ++i) {
+    const std::size_t row = truth.at(i).label ? static_cast<std::size_t>(labels.at(*truth[i].label).type)
+                                              : static_cast<std::size_t>(kKittiLabelTypes);
+    ++counts[row][static_cast<std::size_t>(detections[i].detectedClass)];
+  }
+  return counts;
+}
+
 std::map<int, KittiTrack> kittiTracks(const std::vector<KittiLabel>& labels, const std::vector<SE3>& bodyPoses) {
   std::map<int, std::vector<Point3>> positions;
   std::map<int, KittiTrack> tracks;

@@ -74,6 +74,16 @@ std::vector<KittiDetectionTruth> kittiDetectionTruth(const std::vector<KittiDete
                                                      const std::vector<KittiLabel>& labels,
                                                      const std::map<int, KittiTrack>& tracks);
 
+/// The confusion of detector class against label type (docs/datasets.md, "Detector class against label type"):
+/// [r][c] counts the detections of class c (KittiClass) matched to a label of type r (KittiLabelType order; the
+/// DontCare row stays 0, since DontCare boxes are never matched), and row kKittiLabelTypes those matched to no label
+/// (false positives, near-label, dont-care and unlabelled kinds). Matching is within a class group, so a Car
+/// detection counts on a vehicle row or the last, a Pedestrian or Cyclist one on a person row or the last.
+using KittiLabelConfusion = std::array<std::array<std::size_t, kKittiClasses>, kKittiLabelTypes + 1>;
+KittiLabelConfusion kittiLabelConfusion(const std::vector<KittiDetection>& detections,
+                                        const std::vector<KittiDetectionTruth>& truth,
+                                        const std::vector<KittiLabel>& labels);
+
 /// The class index of a label type that is one of the detector's classes (Person_sitting is a Pedestrian), or
 /// std::nullopt (Van, Truck, Tram, Misc, DontCare).
 std::optional<int> kittiClassOfLabel(KittiLabelType type);

@@ -1,0 +1,478 @@
+"""docs/results.md section of issue 11's study: real detector output through paper B's five methods; used by
+make_results.py (section `kitti-tracking`) and, on a small seeded cut, by tests/scripts/test_results_kitti_tracking.py.
+
+Data: ../shared/data/kitti-tracking, KITTI tracking sequences 0000-0010 (PointRCNN detections, labels with track
+ids, ORB-SLAM3 stereo poses; docs/datasets.md, "KITTI tracking"). For every sequence and every configuration
+
+    semslam convert kitti-tracking DIR --sequence N [--keyframe-period 1]
+        (--odometry orbslam | --odometry noisy --odom-noise-scale K --seed 1)
+    semslam run --method M --in LOG --out RUN --no-covariances        M in known ml gpda mm mm-nh
+    semslam eval rpe --est RUN/trajectory.tum --ref RUN/truth.tum --delta 10 --delta-unit m --pairs-from-reference
+                                                                        (noisy odometry only)
+
+One noise seed serves every scale and both keyframe rates, so the draws are paired: the converter draws the noise
+per 10 Hz frame from std::mt19937(seed) in frame order, δ_K = K δ_1, and keyframing composes the same draws.
+ATE (metrics.json's `ate_rmse`, SE(3)-aligned) and RPE are recovery of the reference trajectory, reported for noisy
+odometry only: with `orbslam` the odometry is made of the reference, so dead reckoning scores 0.
+
+Every number comes from a run's metrics.json (docs/metrics.md) or from `semslam eval rpe --json`; nothing is
+computed here but means over sequences (of the sequences where a metric is defined: sequence 0006 has no static
+landmark, so no real detection). Subprocesses run two at a time (the machine's two cores).
+"""
+import concurrent.futures
+import json
+import math
+import os
+import subprocess
+import sys
+import time
+from typing import NamedTuple, Optional
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+METHODS = ["known", "ml", "gpda", "mm", "mm-nh"]
+SEQUENCES = list(range(11))
+# Possibly outside PointRCNN's training split (the issue); reported apart from the others.
+OUTSIDE_TRAINING = [1, 6, 8, 10]
+SEED = 1
+WORKERS = 2
+RPE_DELTA_METRES = 10
+
+
+class Config(NamedTuple):
+    """One conversion: keyframe period (s; None: every 10 Hz frame) and noise scale (None: `orbslam`)."""
+    period: Optional[float]
+    scale: Optional[float]
+
+    @property
+    def rate(self):
+        return "10 Hz" if self.period is None else f"{1.0 / self.period:g} Hz"
+
+    @property
+    def odometry(self):
+        return "orbslam" if self.scale is None else f"noisy ×{self.scale:g}"
+
+    @property
+    def noisy(self):
+        return self.scale is not None
+
+    @property
+    def name(self):
+        return ("10hz" if self.period is None else f"{1.0 / self.period:g}hz") + (
+            "-orbslam" if self.scale is None else f"-noise{self.scale:g}")
+
+    def convert_arguments(self, seed=SEED):
+        arguments = [] if self.period is None else ["--keyframe-period", f"{self.period:g}"]
+        if self.scale is None:
+            return arguments + ["--odometry", "orbslam"]
+        return arguments + ["--odometry", "noisy", "--odom-noise-scale", f"{self.scale:g}", "--seed", str(seed)]
+
+
+ONE_HZ = [Config(1.0, None), Config(1.0, 1.0), Config(1.0, 5.0), Config(1.0, 10.0)]
+TEN_HZ = [Config(None, None), Config(None, 1.0), Config(None, 5.0), Config(None, 10.0)]
+# 10 Hz keeps ORB-SLAM3 odometry and noise ×5 only: measured on this 2-core machine, a 10 Hz run of a long sequence
+# (0007, 0009: 800 frames, ~3,000 detections) takes ~40 s per DA-unknown method and the 10 Hz runs are nearly all of
+# the section's 12.5 min (2026-12-02, these six configurations), so all four 10 Hz ones would take ~25 min.
+CONFIGS = ONE_HZ + [Config(None, None), Config(None, 5.0)]
+READOUT = Config(1.0, 5.0)  # the issue's "What must hold" configuration
+
+# (metrics.json key, column title): association first, then the trajectory (noisy odometry only).
+ASSOCIATION_COLUMNS = [("da_accuracy_real", "da_accuracy_real"), ("pairwise_precision", "pairwise precision"),
+                       ("pairwise_recall", "pairwise recall"), ("clutter_rejected_moving", "clutter rej. moving"),
+                       ("clutter_rejected_false_positive", "clutter rej. false pos."),
+                       ("landmarks_merged", "merged"), ("landmarks_split", "split")]
+TRAJECTORY_COLUMNS = [("ate_rmse", "ATE [m]"), ("rpe_rmse", f"RPE {RPE_DELTA_METRES} m [m]")]
+
+
+def _run(command):
+    result = subprocess.run(command, capture_output=True, text=True)
+    if result.returncode != 0:
+        sys.exit(f"results_kitti_tracking.py: {' '.join(command)} failed:\n{result.stdout}{result.stderr}")
+    return result.stdout
+
+
+def sequence_name(sequence):
+    return f"{sequence:04d}"
+
+
+def convert_command(semslam, folder, sequence, config, out, max_steps=None, seed=SEED):
+    command = [semslam, "convert", "kitti-tracking", folder, "--sequence", str(sequence), "--out", out]
+    command += config.convert_arguments(seed)
+    return command + (["--max-steps", str(max_steps)] if max_steps else [])
+
+
+def run_command(semslam, method, log, out, extra=()):
+    return [semslam, "run", "--method", method, "--in", log, "--out", out, "--no-covariances", *extra]
+
+
+def rpe_command(semslam, run_dir):
+    return [semslam, "eval", "rpe", "--est", os.path.join(run_dir, "trajectory.tum"), "--ref",
+            os.path.join(run_dir, "truth.tum"), "--format", "tum", "--delta", str(RPE_DELTA_METRES), "--delta-unit",
+            "m", "--pairs-from-reference", "--json"]
+
+
+def _rpe(semslam, run_dir):
+    """`semslam eval rpe --json` of a run, or {} when it has no pair of poses 10 m apart (a short cut)."""
+    result = subprocess.run(rpe_command(semslam, run_dir), capture_output=True, text=True)
+    if result.returncode == 0:
+        return json.loads(result.stdout)
+    if "pair" in result.stderr:
+        return {}
+    sys.exit(f"results_kitti_tracking.py: {' '.join(rpe_command(semslam, run_dir))} failed:\n{result.stderr}")
+
+
+def log_counts(log):
+    """Steps and detections of a converted log by truth: real (a landmark id), moving (not-a-landmark with a
+    clutter_source), false positive (not-a-landmark without), unknown; and the landmarks named."""
+    counts = {"steps": 0, "real": 0, "moving": 0, "false_positive": 0, "unknown": 0}
+    landmarks = set()
+    with open(log) as f:
+        next(f)  # the header
+        for line in f:
+            record = json.loads(line)
+            counts["steps"] += 1
+            for detection in record["detections"]:
+                truth = detection.get("truth")
+                if truth == "not-a-landmark":
+                    counts["moving" if "clutter_source" in detection else "false_positive"] += 1
+                elif truth == "unknown":
+                    counts["unknown"] += 1
+                elif truth is not None:
+                    counts["real"] += 1
+                    landmarks.add(truth)
+    counts["landmarks"] = len(landmarks)
+    return counts
+
+
+def run_study(semslam, folder, scratch, sequences=SEQUENCES, configs=CONFIGS, methods=METHODS, max_steps=None,
+              seed=SEED, workers=WORKERS, run_arguments=()):
+    """Converts, runs and scores every (sequence, configuration, method); returns (rows, logs): one row per run,
+    a dict of the metrics the tables show plus sequence, config, method, run (its folder) and time_s; logs maps
+    (sequence, config) to (log path, log_counts). `run_arguments` go to every `semslam run`."""
+    os.makedirs(scratch, exist_ok=True)
+    logs = {}
+    for sequence in sequences:
+        for config in configs:
+            path = os.path.join(scratch, f"kitti-{sequence_name(sequence)}-{config.name}.jsonl")
+            logs[(sequence, config)] = path
+    with concurrent.futures.ThreadPoolExecutor(max_workers=workers) as pool:
+        list(pool.map(lambda item: _run(convert_command(semslam, folder, item[0][0], item[0][1], item[1], max_steps,
+                                                        seed)), logs.items()))
+        jobs = []
+        for (sequence, config), log in logs.items():
+            for method in methods:
+                out = os.path.join(scratch, f"kitti-{sequence_name(sequence)}-{config.name}", method)
+                jobs.append((sequence, config, method, log, out))
+        list(pool.map(lambda job: _run(run_command(semslam, job[2], job[3], job[4], run_arguments)), jobs))
+        noisy = [job for job in jobs if job[1].noisy]
+        rpe = dict(zip([job[4] for job in noisy], pool.map(lambda job: _rpe(semslam, job[4]), noisy)))
+    rows = []
+    for sequence, config, method, log, out in jobs:
+        with open(os.path.join(out, "metrics.json")) as f:
+            metrics = json.load(f)
+        row = {"sequence": sequence, "config": config, "method": method, "run": out, "log": log,
+               "time_s": metrics.get("time_s"), "landmarks_estimated": metrics.get("landmarks_estimated"),
+               "landmarks_true": metrics.get("landmarks_true")}
+        for key, _ in ASSOCIATION_COLUMNS:
+            row[key] = metrics.get(key)
+        row["ate_rmse"] = metrics.get("ate_rmse") if config.noisy else None
+        row["rpe_rmse"] = rpe[out].get("rmse") if config.noisy else None
+        rows.append(row)
+    return rows, {key: (path, log_counts(path)) for key, path in logs.items()}
+
+
+def _cell(value, digits=3):
+    if value is None or (isinstance(value, float) and math.isnan(value)):
+        return "–"
+    return f"{value:.{digits}f}" if isinstance(value, float) else str(value)
+
+
+def table_header():
+    titles = ["keyframes", "odometry", "method"] + [t for _, t in ASSOCIATION_COLUMNS] + [
+        "landmarks (true)"] + [t for _, t in TRAJECTORY_COLUMNS] + ["time [s]"]
+    return ["| " + " | ".join(titles) + " |", "|" + "---|" * len(titles)]
+
+
+def table_row(row):
+    cells = [row["config"].rate, row["config"].odometry, row["method"]]
+    cells += [_cell(row[key]) for key, _ in ASSOCIATION_COLUMNS]
+    cells.append(f"{_cell(row['landmarks_estimated'])} ({_cell(row['landmarks_true'])})")
+    cells += [_cell(row[key]) for key, _ in TRAJECTORY_COLUMNS]
+    cells.append(_cell(row["time_s"], 2))
+    return "| " + " | ".join(cells) + " |"
+
+
+def mean(values):
+    """The mean of the defined values and how many there were (None when none is)."""
+    defined = [v for v in values if v is not None and not (isinstance(v, float) and math.isnan(v))]
+    return (sum(defined) / len(defined) if defined else None), len(defined)
+
+
+def summary_table(rows, sequences, configs, methods):
+    """Means over `sequences` per configuration and method."""
+    keys = [key for key, _ in ASSOCIATION_COLUMNS] + [key for key, _ in TRAJECTORY_COLUMNS]
+    titles = ["keyframes", "odometry", "method"] + [t for _, t in ASSOCIATION_COLUMNS + TRAJECTORY_COLUMNS] + [
+        "time [s]"]
+    lines = ["| " + " | ".join(titles) + " |", "|" + "---|" * len(titles)]
+    for config in configs:
+        for method in methods:
+            selected = [r for r in rows
+                        if r["config"] == config and r["method"] == method and r["sequence"] in sequences]
+            if not selected:
+                continue
+            cells = [config.rate, config.odometry, method]
+            for key in keys:
+                value, n = mean([r[key] for r in selected])
+                cells.append(_cell(value) + ("" if n in (0, len(selected)) else f" ({n})"))
+            cells.append(_cell(mean([r["time_s"] for r in selected])[0], 2))
+            lines.append("| " + " | ".join(cells) + " |")
+    return lines
+
+
+def readout(rows, sequences):
+    """The issue's "What must hold" at READOUT: mm-nh's mean da_accuracy_real and clutter_rejected_moving over the
+    sequences (≥ 0.9 and ≥ 0.8), and on how many sequences mm-nh is no worse than ml on both (≥ 9 of 11). A metric
+    undefined for both methods (no real detection, no moving clutter) counts as no worse."""
+    at = {(r["sequence"], r["method"]): r for r in rows if r["config"] == READOUT}
+    result = {"da_accuracy_real": mean([at[(s, "mm-nh")]["da_accuracy_real"] for s in sequences if (s, "mm-nh") in at]),
+              "clutter_rejected_moving": mean([at[(s, "mm-nh")]["clutter_rejected_moving"] for s in sequences
+                                               if (s, "mm-nh") in at]),
+              "worse": [], "compared": 0}
+    for s in sequences:
+        if (s, "mm-nh") not in at or (s, "ml") not in at:
+            continue
+        result["compared"] += 1
+        worse = []
+        for key in ("da_accuracy_real", "clutter_rejected_moving"):
+            mm, ml = at[(s, "mm-nh")][key], at[(s, "ml")][key]
+            if mm is not None and ml is not None and mm < ml:
+                worse.append(f"{key} {mm:.3f} < {ml:.3f}")
+            elif mm is None and ml is not None:
+                worse.append(f"{key} undefined for mm-nh")
+        if worse:
+            result["worse"].append((s, worse))
+    return result
+
+
+CONFIRMATION_VARIANT = ["--confirmations", "1"]
+
+
+def variant_table(rows, variant):
+    """Per method, the READOUT means of the default runs against those of CONFIRMATION_VARIANT."""
+    keys = ["da_accuracy_real", "clutter_rejected_moving", "clutter_rejected_false_positive", "landmarks_estimated"]
+    lines = ["| method | confirmations | da_accuracy_real | clutter rej. moving | clutter rej. false pos. | "
+             "landmarks (true) |", "|---|---|---|---|---|---|"]
+    for method in METHODS:
+        for label, source in (("2 (default)", rows), ("1", variant)):
+            selected = [r for r in source if r["config"] == READOUT and r["method"] == method]
+            if not selected:
+                continue
+            cells = []
+            for key in keys:
+                value, n = mean([r[key] for r in selected])
+                cells.append(_cell(value, 1 if key == "landmarks_estimated" else 3) +
+                             ("" if n in (0, len(selected)) else f" ({n})"))
+            true_landmarks = _cell(mean([r["landmarks_true"] for r in selected])[0], 1)
+            lines.append(f"| {method} | {label} | " + " | ".join(cells[:3]) + f" | {cells[3]} ({true_landmarks}) |")
+    return lines
+
+
+def _shown_convert(shown, semslam, folder, config, sequence="N"):
+    command = convert_command(semslam, folder, 0, config, "LOG.jsonl")
+    command[command.index("--sequence") + 1] = str(sequence)
+    return shown(command)
+
+
+def _figure(semslam_python, rows, logs, sequence, figure, title):
+    row = next(r for r in rows if r["sequence"] == sequence and r["config"] == READOUT and r["method"] == "mm-nh")
+    _run([semslam_python, os.path.join(HERE, "plot_kitti_tracking.py"), logs[(sequence, READOUT)][0], row["run"],
+          "--out", figure, "--title", title])
+
+
+# The sequence drawn for each kind: the one with the most static landmarks of its group.
+FIGURE_SEQUENCES = {"inside": 9, "outside": 1}
+
+# What real detector output changes, per method. The numbers are the runs' means (filled in at every regeneration);
+# the mechanisms were traced with python/diagnose_association.py on the runs of 2026-12-02 (READOUT_TRACE) and are
+# stated as such: after a change of the association front end they are the first thing to re-check.
+def _method_paragraph(rows):
+    def m(method, key, config=READOUT, digits=3):
+        return _cell(mean([r[key] for r in rows if r["method"] == method and r["config"] == config])[0], digits)
+
+    ten = Config(None, 5.0)
+    ten_orb = Config(None, None)
+    return [
+        "**What real detector output changes, per method** (means over the eleven sequences, from the tables "
+        "below; the mechanisms as traced on 2026-12-02):", "",
+        "- `known` reads the truth as its association, so it is the ceiling on every association figure, but not on "
+        "ATE: ATE is the distance to the ORB-SLAM3 reference, which the detections themselves disagree with by "
+        "decimetres to a metre (with `orbslam` odometry, known and ml on 0009 at 1 Hz end 0.85 and 0.99 m RMSE from "
+        "the trajectory they were given as odometry), so the more detections a method uses the further it may move "
+        "from the reference "
+        f"(1 Hz ×5: known {m('known', 'ate_rmse')} m, mm-nh {m('mm-nh', 'ate_rmse')}, ml {m('ml', 'ate_rmse')}; "
+        f"10 Hz ×5: {m('known', 'ate_rmse', ten)}, {m('mm-nh', 'ate_rmse', ten)} and {m('ml', 'ate_rmse', ten)} m).",
+        "- For `ml`, `gpda`, `mm` and `mm-nh` alike, the association front end (the unassigned birth rule and its "
+        "provisional landmarks, docs/association-front-end.md) decides more than the method does. At 1 Hz many "
+        "parked cars are in view for 2-3 s and get 2-3 keyframe detections, too few for the confirmation rule (2 "
+        "detections at least 3 median step periods, here 3 s, apart), so most static tracks are never confirmed: "
+        f"`da_accuracy_real` {m('ml', 'da_accuracy_real')} (ml) and {m('mm-nh', 'da_accuracy_real')} (mm-nh) at "
+        "1 Hz ×5. The same rule rejects most moving clutter for every method, mm-nh's null hypothesis or not "
+        f"(moving clutter rejected: ml {m('ml', 'clutter_rejected_moving')}, mm-nh "
+        f"{m('mm-nh', 'clutter_rejected_moving')}). At 10 Hz the spacing is 0.3 s: every method confirms nearly "
+        f"every static car (`da_accuracy_real` {m('ml', 'da_accuracy_real', ten_orb)} for ml and "
+        f"{m('mm-nh', 'da_accuracy_real', ten_orb)} for mm-nh with ORB-SLAM3 odometry), and clutter that comes "
+        "back in consecutive frames is confirmed too: a false positive the detector repeats on the same structure "
+        "is as static as a parked car (clutter-only landmarks of 3-5 detections with χ² per detection 0.4-8 in "
+        f"0009), so false positives are rejected at {m('ml', 'clutter_rejected_false_positive', ten_orb)} (ml) and "
+        f"{m('mm-nh', 'clutter_rejected_false_positive', ten_orb)} (mm-nh), moving objects at "
+        f"{m('ml', 'clutter_rejected_moving', ten_orb)} and {m('mm-nh', 'clutter_rejected_moving', ten_orb)}. "
+        "So the 10 Hz maps hold several times more landmarks than there are static tracks (on average "
+        f"{m('ml', 'landmarks_estimated', ten_orb, 1)} for ml and {m('mm-nh', 'landmarks_estimated', ten_orb, 1)} "
+        f"for mm-nh against {m('known', 'landmarks_estimated', ten_orb, 1)}): confirmed clutter, and objects of `unknown` "
+        "truth (vans, slowly moving cars, boxes in DontCare regions), which every method maps and no metric scores.",
+        "- `ml`, `gpda` and `mm` give the same figures to the last digit on most logs here and differ only where the "
+        "noise is large (1 Hz ×10); presumably (not traced) because static cars stand metres apart, well beyond the "
+        "detector's σ (0.1-0.4 m), so there is rarely a second candidate for EM or the mixture to weigh.",
+        "- `mm-nh` is the one method whose null hypothesis can reject a detection near a landmark. With noisy "
+        "odometry that keeps it closer to the reference (ATE above) and helps the clutter figures at 10 Hz (moving "
+        f"{m('mm-nh', 'clutter_rejected_moving', ten)} against ml's {m('ml', 'clutter_rejected_moving', ten)} at "
+        "×5), but at 1 Hz it costs real detections: once the noise puts a car's second detection outside its "
+        "landmark's component, the detection goes to the null hypothesis, nothing pulls the pose back, and the "
+        f"car's later detections follow (trace 2 above); `da_accuracy_real` {m('mm-nh', 'da_accuracy_real')} "
+        f"against ml's {m('ml', 'da_accuracy_real')} at 1 Hz ×5.", ""]
+
+
+def kitti_tracking_section(semslam, data, scratch, shown, python=None):
+    python = python or sys.executable
+    folder = os.path.join(data, "kitti-tracking")
+    lines = ["## Real detector output: KITTI tracking 0000-0010 (issue 11)", ""]
+    if not os.path.isdir(folder):
+        return lines + [f"The KITTI tracking data is not at {folder}: section skipped.", ""]
+    started = time.monotonic()
+    rows, logs = run_study(semslam, folder, os.path.join(scratch, "kitti-tracking"))
+    variant, _ = run_study(semslam, folder, os.path.join(scratch, "confirmations-1"), configs=[READOUT],
+                           run_arguments=CONFIRMATION_VARIANT)
+    inside = [s for s in SEQUENCES if s not in OUTSIDE_TRAINING]
+    configs = [c for c in CONFIGS]
+    lines += [
+        "PointRCNN detections (cars, pedestrians, cyclists) with the KITTI tracking labels as truth "
+        "(docs/datasets.md, \"KITTI tracking\"): a static track is a landmark, a track that moves more than 5 m is "
+        "*moving* clutter (its `clutter_source`), an unmatched detection a *false positive*, anything in between "
+        "`unknown` and left out of every metric (docs/metrics.md). Keyframes at 1 Hz and at the native 10 Hz; "
+        "odometry ORB-SLAM3's (`orbslam`) or that plus seeded noise at scales 1, 5 and 10 (`noisy ×K`, seed "
+        f"{SEED}, paired across scales and rates). The five methods at their defaults, incremental smoother, "
+        "`--no-covariances`. ATE (SE(3)-aligned RMSE) and RPE (translation RMSE over "
+        f"{RPE_DELTA_METRES} m pairs of the reference) measure recovery of the ORB-SLAM3 reference and are shown "
+        "for noisy odometry only. Sequences 0001, 0006, 0008 and 0010 may lie outside the detector's training split "
+        "and are reported apart. Sequence 0006 has no static landmark (every matched car moves), so it has no "
+        "`da_accuracy_real` or pairwise figure; means are over the sequences where a metric is defined (the count "
+        "in brackets where that is not all of them).", "",
+        f"The whole section (convert {len(logs) + len(SEQUENCES)} logs, {len(rows) + len(variant)} runs, RPE of "
+        f"the noisy ones, 2 subprocesses at a time, then the figures) took **{{minutes}} min** on this machine "
+        f"({os.cpu_count()} cores, shared with other builds while it ran); 10 Hz keeps ORB-SLAM3 odometry and "
+        "noise ×5 only: a 10 Hz run of the long sequences (0007, 0009: 800 frames, ~3,000 detections) takes ~40 s "
+        "per DA-unknown method, and the other two noise scales at 10 Hz would double the section's time.", ""]
+
+    # The read-out first.
+    r = readout(rows, SEQUENCES)
+    da, da_n = r["da_accuracy_real"]
+    moving, moving_n = r["clutter_rejected_moving"]
+    no_worse = r["compared"] - len(r["worse"])
+    lines += ["### The issue's read-out: 1 Hz keyframes, noise ×5, sequences 0000-0010", "",
+              "| requirement | measured | met |", "|---|---|---|",
+              f"| mm-nh mean `da_accuracy_real` ≥ 0.9 | {_cell(da)} (over {da_n} sequences) | "
+              f"{'yes' if da is not None and da >= 0.9 else 'no'} |",
+              f"| mm-nh mean `clutter_rejected_moving` ≥ 0.8 | {_cell(moving)} (over {moving_n} sequences) | "
+              f"{'yes' if moving is not None and moving >= 0.8 else 'no'} |",
+              f"| mm-nh no worse than ml on both, on ≥ 9 of 11 sequences | {no_worse} of {r['compared']} | "
+              f"{'yes' if no_worse >= 9 else 'no'} |", ""]
+    if r["worse"]:
+        lines += ["Where mm-nh is worse than ml: " + "; ".join(
+            f"{sequence_name(s)}: " + ", ".join(w) for s, w in r["worse"]) + ".", ""]
+    lines += ["The same read-out configuration with the provisional landmarks confirmed by their birth detection "
+              f"alone (`semslam run ... {' '.join(CONFIRMATION_VARIANT)}`; the default is 2 detections at least 3 "
+              f"median step periods apart, docs/association-front-end.md), means over the {len(SEQUENCES)} sequences "
+              "(count in brackets where a metric is undefined on some):", ""]
+    lines += variant_table(rows, variant) + [""]
+    lines += READOUT_TRACE + _method_paragraph(rows)
+
+    # Summaries.
+    for title, group in (("inside the detector's training split (0000, 0002-0005, 0007, 0009)", inside),
+                         ("possibly outside it (0001, 0006, 0008, 0010)", OUTSIDE_TRAINING)):
+        lines += [f"### Summary, sequences {title}", "",
+                  f"Means over the {len(group)} sequences per configuration and method.", ""]
+        lines += summary_table(rows, group, configs, METHODS) + [""]
+
+    # Figures.
+    figures = os.path.join("docs", "figures")
+    os.makedirs(figures, exist_ok=True)
+    figure_lines = []
+    for kind, sequence in FIGURE_SEQUENCES.items():
+        figure = os.path.join(figures, f"kitti_tracking_{kind}.png")
+        title = (f"KITTI tracking {sequence_name(sequence)} "
+                 f"({'inside' if kind == 'inside' else 'possibly outside'} the detector's training split): mm-nh, "
+                 f"1 Hz, noise ×5")
+        _figure(python, rows, logs, sequence, figure, title)
+        figure_lines += [f"![KITTI tracking {sequence_name(sequence)}]({os.path.relpath(figure, 'docs')})", ""]
+    lines += ["### Maps", "",
+              "mm-nh at 1 Hz, noise ×5, one sequence of each kind: the estimated trajectory and the reference, the "
+              "confirmed landmarks (the run's landmarks.csv) against the static tracks, the detections mm-nh left on "
+              "no landmark, clutter it put on a landmark, and the moving tracks (detections with a `clutter_source`, "
+              "one line per track) through the estimated poses. `python3 python/plot_kitti_tracking.py LOG RUN_DIR "
+              "--out FILE.png`.", ""] + figure_lines
+
+    # Per sequence.
+    lines += ["### Per sequence", "",
+              "Counts per log: steps, detections by truth (real / moving / false positive / unknown) and the static "
+              "landmarks they name.", ""]
+    for sequence in inside + OUTSIDE_TRAINING:
+        kind = "possibly outside the training split" if sequence in OUTSIDE_TRAINING else "inside the training split"
+        lines += [f"#### Sequence {sequence_name(sequence)} ({kind})", ""]
+        for config in (Config(1.0, None), Config(None, None)):
+            if (sequence, config) in logs:
+                c = logs[(sequence, config)][1]
+                lines.append(f"- {config.rate}: {c['steps']} steps; detections {c['real']} / {c['moving']} / "
+                             f"{c['false_positive']} / {c['unknown']}; {c['landmarks']} landmarks.")
+        lines += ["", "```sh"]
+        for config in configs:
+            lines.append(_shown_convert(shown, semslam, folder, config, sequence).replace(
+                "LOG.jsonl", f"{sequence_name(sequence)}-{config.name}.jsonl"))
+        lines += ["for m in known ml gpda mm mm-nh; do build/bin/semslam run --method $m --in LOG.jsonl "
+                  "--out RUN/$m --no-covariances; done",
+                  f"build/bin/semslam eval rpe --est RUN/M/trajectory.tum --ref RUN/M/truth.tum --format tum "
+                  f"--delta {RPE_DELTA_METRES} --delta-unit m --pairs-from-reference", "```", ""]
+        lines += table_header()
+        lines += [table_row(r) for r in rows if r["sequence"] == sequence] + [""]
+    lines += ["Regenerate this section: `/usr/bin/python3 python/make_results.py --build build --only "
+              "kitti-tracking`.", ""]
+    minutes = f"{(time.monotonic() - started) / 60:.1f}"
+    return [line.replace("{minutes}", minutes) for line in lines]
+
+
+# Written from python/diagnose_association.py on the read-out's runs of 2026-12-02, reproduced by the commands it
+# gives; regenerated numbers above may move, this says what the trace showed then.
+READOUT_TRACE = [
+    "**Why the read-out is not met: two traces** (2026-12-02; reproduce with the commands below).", "",
+    "1. *Unconfirmed static cars (every DA-unknown method).* Sequence 0003, mm-nh, 1 Hz ×5: its six static tracks "
+    "have 2-3 keyframe detections each (a parked car is in view for 2-3 s at the speed of the recording), every one "
+    "of them on `null` — each car's provisional landmark was dropped unconfirmed, since a second detection 3 s "
+    "after the first never came — and the only estimated landmark holds one `unknown` detection: "
+    "`da_accuracy_real` 0 (ml 0.143). With `--confirmations 1` (table above) the same logs give ml nearly every "
+    "real detection and no clutter rejection at all: the confirmation rule, not the mixture, is what separates "
+    "parked cars from clutter here, and at 1 Hz it cannot do both.",
+    "2. *mm-nh loses a car under noisy odometry.* Sequence 0009, track 1 (7 keyframe detections): ml puts all 7 on "
+    "one estimate (χ² 0.1-1.8 at the final estimate); mm-nh births the landmark at step 0 and puts the other six on "
+    "the null hypothesis. Against mm-nh's final landmark and poses, the step-1 detection lies 0.6 m farther and "
+    "0.8 m higher than predicted, χ² 63 against the "
+    "detection's covariance alone; on `null` it adds no factor, so nothing pulls the pose back and the car's later "
+    "detections lie ever further out (χ² 305 at step 6). With `orbslam` odometry the same track is on one estimate "
+    "for mm-nh as for ml (0009 at 1 Hz: `da_accuracy_real` 0.682 against 0.687). Where mm-nh is worse than ml in "
+    "the read-out it is on `da_accuracy_real`, by this mechanism; on moving clutter it is worse only on 0005 "
+    "(0.981 against 1.000: one detection).", "",
+    "```sh",
+    "build/bin/semslam convert kitti-tracking ../shared/data/kitti-tracking --sequence 3 --keyframe-period 1 "
+    "--odometry noisy --odom-noise-scale 5 --seed 1 --out 0003.jsonl",
+    "build/bin/semslam run --method mm-nh --in 0003.jsonl --out 0003/mm-nh --no-covariances",
+    "python3 python/diagnose_association.py 0003/mm-nh",
+    "# the same with --sequence 9 (and --odometry orbslam), methods ml and mm-nh; then in 0009/*/associations.csv "
+    "the rows whose truth is 1",
+    "```", ""]

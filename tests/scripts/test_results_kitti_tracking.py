@@ -1,0 +1,116 @@
+"""python/results_kitti_tracking.py (issue 11's study, docs/results.md section kitti-tracking) on a small seeded
+version: the first 20 keyframes of sequence 0009 at 1 Hz (30 static cars, moving ones and false positives), noise
+×5 and orbslam, two methods (ml, mm-nh). Checks the
+rows' columns and sane values, the tables' columns, paired seeds (the same command twice gives the same metrics), and
+that ATE/RPE are shown for noisy odometry only.
+
+Usage: test_results_kitti_tracking.py SEMSLAM_BINARY SHARED_DATA_DIR
+Skips (exit 77, ctest's SKIP_RETURN_CODE) with a message when SHARED_DATA_DIR/kitti-tracking is absent.
+"""
+import math
+import os
+import sys
+import tempfile
+import unittest
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+import results_kitti_tracking as study  # noqa: E402
+
+SEMSLAM = DATA = None
+SEQUENCE = 9
+CUT_STEPS = 20
+METHODS = ["ml", "mm-nh"]
+NOISY = study.Config(1.0, 5.0)
+ORBSLAM = study.Config(1.0, None)
+
+
+def fraction_or_none(value):
+    return value is None or (isinstance(value, float) and 0.0 <= value <= 1.0)
+
+
+class KittiTrackingStudy(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.scratch = tempfile.TemporaryDirectory()
+        cls.rows, cls.logs = study.run_study(SEMSLAM, os.path.join(DATA, "kitti-tracking"), cls.scratch.name,
+                                             sequences=[SEQUENCE], configs=[ORBSLAM, NOISY], methods=METHODS,
+                                             max_steps=CUT_STEPS)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.scratch.cleanup()
+
+    def test_one_row_per_configuration_and_method_with_every_column(self):
+        self.assertEqual(len(self.rows), 4)
+        self.assertEqual(sorted((r["config"].name, r["method"]) for r in self.rows),
+                         [("1hz-noise5", "ml"), ("1hz-noise5", "mm-nh"), ("1hz-orbslam", "ml"),
+                          ("1hz-orbslam", "mm-nh")])
+        for row in self.rows:
+            for key, _ in study.ASSOCIATION_COLUMNS + study.TRAJECTORY_COLUMNS:
+                self.assertIn(key, row)
+
+    def test_values_are_sane(self):
+        for row in self.rows:
+            name = f"{row['config'].name} {row['method']}"
+            for key in ("da_accuracy_real", "pairwise_precision", "pairwise_recall", "clutter_rejected_moving",
+                        "clutter_rejected_false_positive"):
+                self.assertTrue(fraction_or_none(row[key]), f"{name}: {key} = {row[key]}")
+            for key in ("da_accuracy_real", "clutter_rejected_moving", "clutter_rejected_false_positive"):
+                self.assertIsNotNone(row[key], f"{name}: {key}")  # the cut has all three kinds of detection
+            self.assertGreater(row["da_accuracy_real"], 0.0, name)  # some static car is kept: not a broken pipeline
+            for key in ("landmarks_merged", "landmarks_split", "landmarks_estimated"):
+                self.assertIsInstance(row[key], int, name)
+                self.assertGreaterEqual(row[key], 0, name)
+            self.assertGreater(row["time_s"], 0.0, name)
+            if row["config"].noisy:
+                self.assertTrue(math.isfinite(row["ate_rmse"]) and row["ate_rmse"] >= 0.0, name)
+                self.assertTrue(row["rpe_rmse"] is None or row["rpe_rmse"] >= 0.0, name)
+            else:  # the reference is the odometry's own source: no trajectory error reported
+                self.assertIsNone(row["ate_rmse"], name)
+                self.assertIsNone(row["rpe_rmse"], name)
+
+    def test_the_logs_are_the_cut_and_carry_moving_clutter(self):
+        for (sequence, config), (path, counts) in self.logs.items():
+            self.assertEqual(sequence, SEQUENCE)
+            self.assertEqual(counts["steps"], CUT_STEPS)
+            self.assertGreater(counts["real"], 0)
+            self.assertGreater(counts["moving"], 0)
+            self.assertGreater(counts["false_positive"], 0)
+
+    def test_tables_have_the_expected_columns(self):
+        header = study.table_header()[0]
+        for title in ("da_accuracy_real", "pairwise precision", "pairwise recall", "clutter rej. moving",
+                      "clutter rej. false pos.", "merged", "split", "ATE [m]", "RPE 10 m [m]"):
+            self.assertIn(f"| {title} |", header)
+        columns = header.count("|") - 1
+        for row in self.rows:
+            line = study.table_row(row)
+            self.assertEqual(line.count("|") - 1, columns, line)
+            if not row["config"].noisy:
+                self.assertTrue(line.endswith(f"| – | – | {row['time_s']:.2f} |"), line)
+        summary = study.summary_table(self.rows, [SEQUENCE], [ORBSLAM, NOISY], METHODS)
+        self.assertEqual(len(summary), 2 + 4)
+        # The read-out configuration (1 Hz, noise ×5) is NOISY here: one sequence compared, mm-nh's means defined.
+        self.assertEqual(study.READOUT, NOISY)
+        readout = study.readout(self.rows, [SEQUENCE])
+        self.assertEqual(readout["compared"], 1)
+        self.assertEqual(readout["da_accuracy_real"][1], 1)
+
+    def test_same_seed_same_metrics(self):
+        with tempfile.TemporaryDirectory() as scratch:
+            again, _ = study.run_study(SEMSLAM, os.path.join(DATA, "kitti-tracking"), scratch, sequences=[SEQUENCE],
+                                       configs=[NOISY], methods=["mm-nh"], max_steps=CUT_STEPS)
+        first = next(r for r in self.rows if r["config"] == NOISY and r["method"] == "mm-nh")
+        for key, _ in study.ASSOCIATION_COLUMNS + study.TRAJECTORY_COLUMNS:
+            self.assertEqual(again[0][key], first[key], key)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        sys.exit("usage: test_results_kitti_tracking.py SEMSLAM_BINARY SHARED_DATA_DIR")
+    SEMSLAM, DATA = sys.argv[1], sys.argv[2]
+    if not os.path.isdir(os.path.join(DATA, "kitti-tracking")):
+        print(f"skipped: shared dataset not found: {os.path.join(DATA, 'kitti-tracking')} "
+              "(expected ../shared/data beside the repository)")
+        sys.exit(77)
+    unittest.main(argv=sys.argv[:1])
