@@ -6,28 +6,14 @@ B's threshold rule for mm-nh, and the association ceiling (the same front end wi
 estimate, `--on-known-trajectory`). Every row comes from the run's metrics.json; the commands are printed.
 """
 import concurrent.futures
-import json
 import os
-import subprocess
-import sys
 
+from results_commands import read_metrics, run_checked
 from results_max_mixtures import kitti_simulation
 
 ROBOTS = [1, 2, 3, 4, 5]
 COLUMNS = ["ate_rmse", "da_accuracy_real", "pairwise_precision", "pairwise_recall", "clutter_rejected",
            "landmarks_merged", "landmarks_split", "landmarks_estimated", "time_s"]
-
-
-def run_checked(command):
-    """Runs a command of a results section; exits with its output when it fails."""
-    result = subprocess.run(command, capture_output=True, text=True)
-    if result.returncode != 0:
-        sys.exit(f"make_results.py: {' '.join(command)} failed:\n{result.stdout}{result.stderr}")
-
-
-def read_metrics(folder):
-    with open(os.path.join(folder, "metrics.json")) as f:
-        return json.load(f)
 
 
 def _cell(value):

@@ -11,7 +11,7 @@ import concurrent.futures
 import os
 import statistics
 
-from results_association import read_metrics, run_checked
+from results_commands import read_metrics, run_checked
 from results_max_mixtures import kitti_simulation
 
 # (flag, values); the default of each is in the list, so its row is the defaults' run.

@@ -28,6 +28,8 @@ import sys
 import time
 from typing import NamedTuple, Optional
 
+from results_commands import run_checked
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 METHODS = ["known", "ml", "gpda", "mm", "mm-nh"]
 SEQUENCES = list(range(11))
@@ -81,13 +83,6 @@ ASSOCIATION_COLUMNS = [("da_accuracy_real", "da_accuracy_real"), ("pairwise_prec
                        ("clutter_rejected_false_positive", "clutter rej. false pos."),
                        ("landmarks_merged", "merged"), ("landmarks_split", "split")]
 TRAJECTORY_COLUMNS = [("ate_rmse", "ATE [m]"), ("rpe_rmse", f"RPE {RPE_DELTA_METRES} m [m]")]
-
-
-def _run(command):
-    result = subprocess.run(command, capture_output=True, text=True)
-    if result.returncode != 0:
-        sys.exit(f"results_kitti_tracking.py: {' '.join(command)} failed:\n{result.stdout}{result.stderr}")
-    return result.stdout
 
 
 def sequence_name(sequence):
@@ -155,14 +150,14 @@ def run_study(semslam, folder, scratch, sequences=SEQUENCES, configs=CONFIGS, me
             path = os.path.join(scratch, f"kitti-{sequence_name(sequence)}-{config.name}.jsonl")
             logs[(sequence, config)] = path
     with concurrent.futures.ThreadPoolExecutor(max_workers=workers) as pool:
-        list(pool.map(lambda item: _run(convert_command(semslam, folder, item[0][0], item[0][1], item[1], max_steps,
+        list(pool.map(lambda item: run_checked(convert_command(semslam, folder, item[0][0], item[0][1], item[1], max_steps,
                                                         seed)), logs.items()))
         jobs = []
         for (sequence, config), log in logs.items():
             for method in methods:
                 out = os.path.join(scratch, f"kitti-{sequence_name(sequence)}-{config.name}", method)
                 jobs.append((sequence, config, method, log, out))
-        list(pool.map(lambda job: _run(run_command(semslam, job[2], job[3], job[4], run_arguments)), jobs))
+        list(pool.map(lambda job: run_checked(run_command(semslam, job[2], job[3], job[4], run_arguments)), jobs))
         noisy = [job for job in jobs if job[1].noisy]
         rpe = dict(zip([job[4] for job in noisy], pool.map(lambda job: _rpe(semslam, job[4]), noisy)))
     rows = []
@@ -284,7 +279,7 @@ def _shown_convert(shown, semslam, folder, config, sequence="N"):
 
 def _figure(semslam_python, rows, logs, sequence, figure, title):
     row = next(r for r in rows if r["sequence"] == sequence and r["config"] == READOUT and r["method"] == "mm-nh")
-    _run([semslam_python, os.path.join(HERE, "plot_kitti_tracking.py"), logs[(sequence, READOUT)][0], row["run"],
+    run_checked([semslam_python, os.path.join(HERE, "plot_kitti_tracking.py"), logs[(sequence, READOUT)][0], row["run"],
           "--out", figure, "--title", title])
 
 

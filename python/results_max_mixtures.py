@@ -5,23 +5,12 @@ prints the commands that produced it.
 """
 import json
 import os
-import subprocess
 import sys
+
+from results_commands import read_metrics, run_checked
 
 METHODS = ["known", "ml", "gpda", "mm", "mm-nh"]
 HERE = os.path.dirname(os.path.abspath(__file__))
-
-
-def _run(command):
-    result = subprocess.run(command, capture_output=True, text=True)
-    if result.returncode != 0:
-        sys.exit(f"results_max_mixtures.py: {' '.join(command)} failed:\n{result.stdout}{result.stderr}")
-    return result.stdout
-
-
-def _metrics(folder):
-    with open(os.path.join(folder, "metrics.json")) as f:
-        return json.load(f)
 
 
 def _log_duration(log):
@@ -44,7 +33,7 @@ def _error_table(runs, duration):
              "rot RMSE | DA accuracy | landmarks (true) | NEES mean (95 % band) | time [s] | real-time factor |",
              "|---|" + "---|" * 13]
     for method, folder in runs:
-        m = _metrics(folder)
+        m = read_metrics(folder)
         nees = (f"{_number(m.get('nees_mean'), 2)} ({_number(m.get('nees_lower'), 2)}–"
                 f"{_number(m.get('nees_upper'), 2)})")
         lines.append(
@@ -61,10 +50,10 @@ def _methods_on_log(semslam, log, name, scratch, figures, title, extra=()):
     runs = []
     for method in METHODS:
         folder = os.path.join(scratch, name, method)
-        _run([semslam, "run", "--method", method, "--in", log, "--out", folder, *extra])
+        run_checked([semslam, "run", "--method", method, "--in", log, "--out", folder, *extra])
         runs.append((method, folder))
     figure = os.path.join(figures, f"{name}_methods.png")
-    _run([sys.executable, os.path.join(HERE, "plot_methods.py"), *[f for _, f in runs], "--out", figure,
+    run_checked([sys.executable, os.path.join(HERE, "plot_methods.py"), *[f for _, f in runs], "--out", figure,
           "--title", title])
     return _error_table(runs, _log_duration(log)), figure
 
@@ -85,7 +74,7 @@ def max_mixture_sections(semslam, data, scratch, shown):
         log = os.path.join(scratch, "litw.jsonl")
         convert = [semslam, "convert", "utias-lost-in-the-woods", litw, "--out", log, "--classes", "3",
                    "--misclassification", "0.1", "--keyframe-period", "1"]
-        _run(convert)
+        run_checked(convert)
         table, figure = _methods_on_log(semslam, log, "litw", scratch, figures, "Lost in the Woods, 1 s keyframes")
         lines += ["### Lost in the Woods (paper B, Tables I and II analog)", "", "```sh",
                   shown(convert).replace(log, "litw.jsonl"),
@@ -96,9 +85,9 @@ def max_mixture_sections(semslam, data, scratch, shown):
                       "| gate | DA accuracy | landmarks (true) | ATE RMSE [m] | time [s] |", "|---|---|---|---|---|"]
         for gate in ["0.9", "0.999", "0.999999"]:
             folder = os.path.join(scratch, "litw-gate", gate)
-            _run([semslam, "run", "--method", "mm-nh", "--gate", gate, "--in", log, "--out", folder,
+            run_checked([semslam, "run", "--method", "mm-nh", "--gate", gate, "--in", log, "--out", folder,
                   "--no-covariances"])
-            m = _metrics(folder)
+            m = read_metrics(folder)
             gate_lines.append(f"| {gate} | {_number(m.get('da_accuracy'))} | {m.get('landmarks_estimated')} "
                               f"({m.get('landmarks_true')}) | {_number(m.get('ate_rmse'))} | "
                               f"{_number(m.get('time_s'), 1)} |")
@@ -112,9 +101,9 @@ def max_mixture_sections(semslam, data, scratch, shown):
         for method in ["known", "mm-nh"]:
             for smoother in ["incremental", "batch"]:
                 folder = os.path.join(scratch, "litw-backend", method, smoother)
-                _run([semslam, "run", "--method", method, "--smoother", smoother, "--in", log, "--out", folder,
+                run_checked([semslam, "run", "--method", method, "--smoother", smoother, "--in", log, "--out", folder,
                       "--no-covariances"])
-                m = _metrics(folder)
+                m = read_metrics(folder)
                 backend_lines.append(f"| {method} | {smoother} | {_number(m.get('ate_rmse'))} | "
                                      f"{_number(m.get('da_accuracy'))} | {_number(m.get('time_s'), 2)} | "
                                      f"{_number(duration / m['time_s'], 0)} |")
@@ -129,7 +118,7 @@ def max_mixture_sections(semslam, data, scratch, shown):
         log = os.path.join(scratch, "starry.jsonl")
         convert = [semslam, "convert", "utias-starry-night", starry, "--out", log, "--classes", "3",
                    "--misclassification", "0.1"]
-        _run(convert)
+        run_checked(convert)
         table, figure = _methods_on_log(semslam, log, "starry", scratch, figures, "Starry Night (3D, from above)")
         lines += ["### Starry Night (3D, range-bearing-elevation)", "", "```sh", shown(convert).replace(log, "starry.jsonl"),
                   "for m in known ml gpda mm mm-nh; do build/bin/semslam run --method $m --in starry.jsonl --out starry/$m; done",
@@ -138,7 +127,7 @@ def max_mixture_sections(semslam, data, scratch, shown):
     if os.path.exists(kitti):
         log = os.path.join(scratch, "kitti00.jsonl")
         simulate = kitti_simulation(semslam, kitti, log)
-        _run(simulate)
+        run_checked(simulate)
         table, figure = _methods_on_log(semslam, log, "kitti00", scratch, figures,
                                         "semantic simulator over KITTI 00 (3D, from above)")
         lines += ["### Semantic simulator in 3D over KITTI 00", "", "```sh", shown(simulate).replace(log, "kitti00.jsonl"),
@@ -233,17 +222,17 @@ def robustness_sections(semslam, data, scratch, shown):
             continue
         log = os.path.join(scratch, f"robustness-{name}.jsonl")
         convert = [semslam, "convert", kind, path, "--out", log] + options
-        _run(convert)
+        run_checked(convert)
         by_rule = []
         for rule, suffix in (("unassigned", ""), ("threshold", "-threshold")):
             out = os.path.join("docs", "results", "robustness", name + suffix)
             os.makedirs(out, exist_ok=True)
             study = [semslam, "study", "robustness", "--log", log, "--max-steps", str(steps), "--out", out,
                      "--birth", rule] + ROBUSTNESS_STUDY
-            summary = _run(study).strip()
+            summary = run_checked(study).strip()
             plot = [sys.executable, os.path.join(HERE, "plot_robustness.py"), out, "--metrics",
                     "ate_rmse,rot_rmse,da_accuracy,da_accuracy_real"]
-            _run(plot)
+            run_checked(plot)
             with open(os.path.join(out, "robustness_summary.csv")) as f:
                 rows = list(csv.DictReader(f))
             by_rule.append((rule, rows))
