@@ -32,6 +32,11 @@ void addSemanticSlamOptions(CLI::App* command, SemanticSlamOptions& options) {
                       "provisional landmark (M)")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
+  command->add_option("--confirmation-spacing", options.provisional.spacingPeriods,
+                      "birth unassigned: the least time between two detections that count towards M, in median step "
+                      "periods (docs/association-front-end.md §5)")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
   command->add_option("--patience", options.provisional.patience,
                       "birth unassigned: steps in the sensor's field after which an unconfirmed landmark is dropped (N)")
       ->check(CLI::Range(1, 1000000))

@@ -82,6 +82,28 @@ TEST(RunCommand, MaxMixtureMethodsWriteTheRunFolderAndMetrics) {
   fs::remove_all(dir);
 }
 
+TEST(RunCommand, TheConfirmationSpacingReachesTheProvisionalLandmarkRule) {
+  // A spacing no run can meet (1000 median step periods in a 30-step log) confirms nothing: finish() drops every
+  // provisional landmark, so the map is empty; the default confirms the simulated landmarks.
+  const fs::path dir = freshDirectory("semslam_run_spacing");
+  const fs::path log = dir / "run.jsonl";
+  ASSERT_EQ(runSemslam("simulate semantic --steps 30 --seed 4 --out \"" + log.string() + "\"").exitCode, 0);
+  auto landmarks = [&](const std::string& flags) {
+    const fs::path out = dir / "out";
+    const auto result = runSemslam("run --method mm-nh --in \"" + log.string() + "\" --out \"" + out.string() + "\" " +
+                                   flags);
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    std::ifstream metricsFile(out / "metrics.json");
+    return nlohmann::json::parse(metricsFile)["landmarks_estimated"].get<int>();
+  };
+  EXPECT_GT(landmarks(""), 0);
+  EXPECT_EQ(landmarks("--confirmation-spacing 1000"), 0);
+  EXPECT_EQ(runSemslam("run --method mm-nh --in \"" + log.string() + "\" --out \"" + (dir / "bad").string() +
+                       "\" --confirmation-spacing -1").exitCode,
+            2);
+  fs::remove_all(dir);
+}
+
 TEST(RunCommand, AssociationsReportEachDetectionsResidualAtTheFinalEstimate) {
   // chi2 = rᵀR⁻¹r of each detection on a landmark at the final estimate. The simulator draws the detections from
   // their stated covariance, so under known association the mean over 272 detections is near the measurement
