@@ -18,13 +18,12 @@ struct GroupLabels {
   double logEvidence = kNegativeInfinity;
   int mostProbableClass = 0;
 };
-/// Over the detections with member[i] == inGroup, or over every detection.
-GroupLabels groupLabels(const std::vector<SplitEvidence>& detections, const std::vector<bool>& member, bool inGroup,
-                        bool everyDetection) {
+/// Over the detections with member[i] == inGroup.
+GroupLabels groupLabels(const std::vector<SplitEvidence>& detections, const std::vector<bool>& member, bool inGroup) {
   const Eigen::Index classes = detections.front().classLikelihoods.size();
   Vector logProducts = Vector::Zero(classes);
   for (std::size_t i = 0; i < detections.size(); ++i) {
-    if (!everyDetection && member[i] != inGroup) continue;
+    if (member[i] != inGroup) continue;
     logProducts += detections[i].classLikelihoods.array().log().matrix();
   }
   Eigen::Index mostProbable = 0;
@@ -86,8 +85,8 @@ std::optional<LandmarkSplitDecision> bestLandmarkSplit(const std::vector<SplitEv
   // Two co-located objects: at each of the n steps with a detection on the landmark (one per step, §4) the other
   // object was in view and missed.
   const double logMisses = static_cast<double>(detections.size()) * std::log1p(-detectionProbability);
-  const std::vector<bool> none(detections.size(), false);
-  const double logTogether = groupLabels(detections, none, false, true).logEvidence;  // ln P(s_A∪B)
+  const std::vector<bool> every(detections.size(), true);
+  const double logTogether = groupLabels(detections, every, true).logEvidence;  // ln P(s_A∪B)
   std::optional<LandmarkSplitDecision> best;
   for (Eigen::Index a = 0; a < classes; ++a) {
     for (Eigen::Index b = 0; b < classes; ++b) {
@@ -99,8 +98,8 @@ std::optional<LandmarkSplitDecision> bestLandmarkSplit(const std::vector<SplitEv
         moved += second[i] ? 1 : 0;
       }
       if (moved == 0 || moved == detections.size()) continue;
-      const GroupLabels labelsFirst = groupLabels(detections, second, false, false);
-      const GroupLabels labelsSecond = groupLabels(detections, second, true, false);
+      const GroupLabels labelsFirst = groupLabels(detections, second, false);
+      const GroupLabels labelsSecond = groupLabels(detections, second, true);
       const double logFirst = labelsFirst.logEvidence, logSecond = labelsSecond.logEvidence;
       if (!std::isfinite(logFirst) || !std::isfinite(logSecond)) continue;  // a group no single class explains
       const std::optional<GroupFit> first = fitGroup(detections, second, false);

@@ -821,10 +821,8 @@ void SemanticSlam::splitLandmarks(const std::vector<bool>& seen) {
     for (std::size_t i = 0; i < on.size(); ++i) {
       if (split->second[i]) moved.push_back(on[i]);
     }
-    Values unused;  // the variable enters with the edit below
-    const int second = addLandmark(initial, std::nullopt, unused,
+    const int second = addLandmark(initial, std::nullopt, newLandmarks,  // enters with the edit below
                                    stepTimes_[static_cast<std::size_t>(records_[moved.front()].step)]);
-    newLandmarks.insert(landmarks_[second].key, initial);
     landmarks_[j].distinctFrom.push_back(second);
     landmarks_[second].distinctFrom.push_back(j);
     for (std::size_t r : moved) {

@@ -33,9 +33,15 @@ struct Components {
   void join(std::size_t a, std::size_t b) { parent[find(a)] = find(b); }
 };
 
-std::string unusedVariables(const FactorGraph& graph, const Values& values) {
+/// Every variable some factor names.
+std::set<Key> namedVariables(const FactorGraph& graph) {
   std::set<Key> named;
   for (const FactorPtr& factor : graph) named.insert(factor->keys().begin(), factor->keys().end());
+  return named;
+}
+
+std::string unusedVariables(const FactorGraph& graph, const Values& values) {
+  const std::set<Key> named = namedVariables(graph);
   std::vector<Key> unused;
   for (Key key : values.keys()) {
     if (!named.count(key)) unused.push_back(key);
@@ -48,8 +54,7 @@ std::string unusedVariables(const FactorGraph& graph, const Values& values) {
 }
 
 std::string unanchoredParts(const FactorGraph& graph, const Values& values) {
-  std::set<Key> named;  // only variables some factor names are in the system
-  for (const FactorPtr& factor : graph) named.insert(factor->keys().begin(), factor->keys().end());
+  const std::set<Key> named = namedVariables(graph);  // only variables some factor names are in the system
   std::vector<Key> keys;
   for (Key key : values.keys()) {
     if (named.count(key)) keys.push_back(key);
