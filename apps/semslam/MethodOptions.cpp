@@ -87,8 +87,14 @@ void addHybridOptions(CLI::App* command, HybridOptions& options) {
                       "hybrid one-at-a-time: chi-square confidence of the joint compatibility test")
       ->check(CLI::Range(1e-9, 1.0 - 1e-12))
       ->capture_default_str();
-  command->add_option("--max-components", options.maxComponents, "hybrid: keep at most N components (0: no cap)")
+  command->add_option("--max-components", options.maxComponents,
+                      "hybrid: keep at most N components, each a copy of its factor graph (0: no cap)")
       ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  command->add_option("--max-candidates", options.maxCandidates,
+                      "hybrid: candidate associations a step may hold; past it whole branching goes one detection "
+                      "at a time")
+      ->check(CLI::PositiveNumber)
       ->capture_default_str();
   command->add_flag("--no-visibility{false}", options.visibility,
                     "hybrid: sampled weights without the visibility model");

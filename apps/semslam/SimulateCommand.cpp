@@ -1,7 +1,8 @@
 // semslam simulate aliased2d|semantic: seeded, deterministic measurement logs (docs/simulators.md).
 //
 //   aliased2d  paper A's perceptually aliased scenario: N tracks of K steps from one start (src/semslam/sim/
-//              Aliased2dSimulator.h), the scenario from --scenario FILE or the built-in default.
+//              Aliased2dSimulator.h), the scenario from --scenario FILE, a generated layout (--layout-seed S,
+//              sim/Aliased2dLayout.h) or the built-in default.
 //              Several tracks go to a folder (io/Aliased2dTrackFolder.h).
 //   semantic   paper B-style runs in 2D or 3D along a generated path or a TUM/KITTI trajectory
 //              (src/semslam/sim/SemanticSimulator.h; the truth and the run: io/SemanticSimulationTruth.h).
@@ -19,6 +20,7 @@
 #include "semslam/io/MeasurementLogFile.h"
 #include "semslam/io/ScenarioFile.h"
 #include "semslam/io/SemanticSimulationTruth.h"
+#include "semslam/sim/Aliased2dLayout.h"
 #include "semslam/sim/Aliased2dSimulator.h"
 
 namespace semslam::cli {
@@ -39,6 +41,7 @@ const CLI::Validator kSeedValidator(
 
 struct AliasedOptions {
   std::string scenario;
+  std::optional<std::uint64_t> layoutSeed;
   int tracks = 1;
   int steps = 10;
   std::uint64_t seed = 1;
@@ -48,9 +51,14 @@ struct AliasedOptions {
   bool quiet = false;
 };
 
+Aliased2dScenario scenarioOf(const AliasedOptions& options) {
+  if (!options.scenario.empty()) return readAliased2dScenario(options.scenario);
+  if (options.layoutSeed) return generatedAliased2dScenario(*options.layoutSeed);
+  return defaultAliased2dScenario();
+}
+
 void runAliased(const AliasedOptions& options) {
-  Aliased2dScenario scenario =
-      options.scenario.empty() ? defaultAliased2dScenario() : readAliased2dScenario(options.scenario);
+  Aliased2dScenario scenario = scenarioOf(options);
   if (options.alpha) {
     if (!(*options.alpha >= 0.0 && *options.alpha <= 1.0)) {
       throw InputError("--alpha: must be in [0, 1], found " + std::to_string(*options.alpha));
@@ -86,8 +94,14 @@ void addAliased(CLI::App& simulate) {
   auto options = std::make_shared<AliasedOptions>();
   CLI::App* command = simulate.add_subcommand(
       "aliased2d", "Paper A's perceptually aliased 2D scenario: sampled tracks from one start (docs/simulators.md)");
-  command->add_option("--scenario", options->scenario, "scenario JSON file (default: the built-in parking aisle)")
-      ->check(CLI::ExistingFile);
+  CLI::Option* scenario =
+      command->add_option("--scenario", options->scenario, "scenario JSON file (default: the built-in parking aisle)")
+          ->check(CLI::ExistingFile);
+  command
+      ->add_option("--layout-seed", options->layoutSeed,
+                   "a generated layout instead (six objects in three translated pairs; docs/simulators.md)")
+      ->check(kSeedValidator)
+      ->excludes(scenario);
   command->add_option("--tracks", options->tracks, "number of ground-truth tracks")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();

@@ -23,6 +23,31 @@ fs::path freshDirectory(const std::string& name) {
 
 }  // namespace
 
+TEST(RunCommand, AHybridMemoryBoundThatBindsIsNotedAndTheRunFinishes) {
+  const fs::path dir = freshDirectory("semslam_run_hybrid_bounds");
+  const fs::path log = dir / "track.jsonl";
+  ASSERT_EQ(runSemslam("simulate aliased2d --steps 6 --seed 2 --out \"" + log.string() + "\"").exitCode, 0);
+  const std::string run = "run --in \"" + log.string() + "\" --samples 50 --no-covariances --quiet";
+  const auto candidates =
+      runSemslam(run + " --method hybrid --max-candidates 2 --out \"" + (dir / "a").string() + "\"");
+  ASSERT_EQ(candidates.exitCode, 0) << candidates.output;
+  EXPECT_NE(candidates.output.find("note: the hybrid belief's memory bounds bound"), std::string::npos)
+      << candidates.output;
+  EXPECT_NE(candidates.output.find("--max-candidates 2"), std::string::npos) << candidates.output;
+  EXPECT_TRUE(fs::exists(dir / "a" / "metrics.json"));
+  // Without the classifier the aliased bays keep several components alive.
+  const auto components =
+      runSemslam(run + " --method hybrid-geometric --max-components 1 --out \"" + (dir / "b").string() + "\"");
+  ASSERT_EQ(components.exitCode, 0) << components.output;
+  EXPECT_NE(components.output.find("the component cap (--max-components 1) dropped"), std::string::npos)
+      << components.output;
+  const auto defaults = runSemslam(run + " --method hybrid --out \"" + (dir / "c").string() + "\"");
+  ASSERT_EQ(defaults.exitCode, 0) << defaults.output;
+  EXPECT_EQ(defaults.output.find("memory bounds"), std::string::npos) << defaults.output;
+  EXPECT_NE(runSemslam(run + " --method hybrid --max-candidates 0 --out \"" + (dir / "d").string() + "\"").exitCode, 0);
+  fs::remove_all(dir);
+}
+
 TEST(RunCommand, HybridWritesMetricsTrajectoryAndHypotheses) {
   const fs::path dir = freshDirectory("semslam_run_hybrid");
   const fs::path log = dir / "track.jsonl";

@@ -232,6 +232,64 @@ TEST(HybridBelief, OneDetectionAtATimeAgreesWithWholeAssociationsWhenNothingIsPr
   EXPECT_NEAR(ma.front().weight, mb.front().weight, 1e-6);
 }
 
+// Bounded memory (HybridOptions: maxCandidates, maxComponents): a bound that binds changes how the step branches
+// and is reported, never a crash or an allocation sized by the unbounded count.
+TEST(HybridBelief, PastTheCandidateBoundAWholeStepBranchesOneDetectionAtATimeAndSaysSo) {
+  // Two detections among six objects with classes: up to 6 · 5 · 2² = 120 candidates per parent.
+  const MeasurementLog log = linearToyLog({Point2(1, 0), Point2(3, 0), Point2(5, 0), Point2(7, 0), Point2(9, 0),
+                                           Point2(11, 0)},
+                                          {Vector2(1, 0), Vector2(3, 0)});
+  HybridOptions bounded;
+  bounded.weights = WeightMethod::Analytic;
+  bounded.useSemantics = false;
+  bounded.maxCandidates = 29;  // 6 · 5 = 30 whole associations
+  const HybridRunOutput out = runHybrid(log, bounded);
+  const PropWeightsReport& report = out.steps.front().report.weights;
+  EXPECT_TRUE(report.branchedOneAtATime);
+  EXPECT_EQ(report.wholeAssociationBound, 30.0);
+  EXPECT_LE(report.candidates, 29u);
+  const std::string note = describeBoundsThatBound(out.steps, bounded);
+  EXPECT_NE(note.find("branched one detection at a time"), std::string::npos) << note;
+  EXPECT_NE(note.find("--max-candidates 29"), std::string::npos) << note;
+
+  HybridOptions loose = bounded;
+  loose.maxCandidates = 30;
+  const HybridRunOutput whole = runHybrid(log, loose);
+  EXPECT_FALSE(whole.steps.front().report.weights.branchedOneAtATime);
+  EXPECT_EQ(whole.steps.front().report.weights.candidates, 30u);
+  EXPECT_EQ(describeBoundsThatBound(whole.steps, loose), "");
+}
+
+TEST(HybridBelief, OneDetectionAtATimeKeepsAtMostTheCandidateBoundOfPartialAssociations) {
+  const MeasurementLog log = linearToyLog({Point2(1, 0), Point2(1.1, 0), Point2(1.2, 0), Point2(1.3, 0)},
+                                          {Vector2(1, 0), Vector2(1.2, 0)}, 0.3, 0.5, 0.5);
+  HybridOptions options;
+  options.weights = WeightMethod::Analytic;
+  options.useSemantics = false;
+  options.branching = Branching::OneDetectionAtATime;
+  options.jointCompatibility = 1.0 - 1e-12;
+  options.gateRatio = 0.0;
+  options.maxCandidates = 3;
+  const HybridRunOutput out = runHybrid(log, options);
+  const HybridStepReport& report = out.steps.front().report;
+  EXPECT_LE(report.weights.candidates, 3u);
+  EXPECT_GT(report.weights.truncatedPartials, 0u);
+  EXPECT_NE(describeBoundsThatBound(out.steps, options).find("heaviest partial associations"), std::string::npos);
+}
+
+TEST(HybridBelief, TheComponentCapIsReportedWhenItBinds) {
+  const MeasurementLog log = linearToyLog({Point2(1, 0), Point2(1.1, 0), Point2(1.2, 0)}, {Vector2(1.1, 0)});
+  HybridOptions options;
+  options.weights = WeightMethod::Analytic;
+  options.useSemantics = false;
+  options.pruneRatio = 0.0;
+  options.maxComponents = 2;
+  const HybridRunOutput out = runHybrid(log, options);
+  EXPECT_EQ(out.result.components.size(), 2u);
+  EXPECT_EQ(out.steps.front().report.cappedComponents, 1u);
+  EXPECT_NE(describeBoundsThatBound(out.steps, options).find("--max-components 2"), std::string::npos);
+}
+
 TEST(HybridBelief, RejectsLogsWithoutAMapOrInitialPrior) {
   MeasurementLog log = linearToyLog({Point2(1, 0)}, {Vector2(1, 0)});
   log.header.landmarkPriors.clear();

@@ -32,6 +32,9 @@ TEST(Pruning, KeepsWeightsAboveTheThresholdNormalisedAndTheHeaviest) {
     EXPECT_NEAR(std::accumulate(result.weights.begin(), result.weights.end(), 0.0), 1.0, 1e-12);
     EXPECT_NE(std::find(result.kept.begin(), result.kept.end(), heaviest), result.kept.end());
     if (cap > 0) EXPECT_LE(result.kept.size(), static_cast<std::size_t>(cap));
+    std::size_t aboveRatio = 0;
+    for (double w : input) aboveRatio += (w > 0.0 && w >= input[heaviest] / ratio) ? 1 : 0;
+    EXPECT_EQ(result.capped, aboveRatio - result.kept.size());
     double kept = 0.0;
     for (std::size_t i = 0; i < result.kept.size(); ++i) {
       EXPECT_GT(result.weights[i], 0.0);

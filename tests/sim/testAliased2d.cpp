@@ -112,7 +112,8 @@ TEST(Aliased2d, GeneratedLogsReadBackAndDescribeTheScenario) {
 
 TEST(Aliased2d, PriorMeansAreTheTruthWhenAskedFor) {
   Aliased2dScenario scenario = defaultAliased2dScenario();
-  scenario.priors.means = PriorMeans::Truth;
+  scenario.priors.poseMean = PoseMean::Start;
+  scenario.priors.objectMeans = ObjectMeans::Truth;
   const MeasurementLog log = simulateAliased2dTrack(scenario, 1, 0, 3);
   EXPECT_TRUE(std::get<SE2>(log.header.initialPose->mean).equals(scenario.start, 0.0));
   for (std::size_t i = 0; i < 6; ++i) {
@@ -120,8 +121,30 @@ TEST(Aliased2d, PriorMeansAreTheTruthWhenAskedFor) {
   }
 }
 
-TEST(Aliased2d, NoiseMatchesTheStatedCovariances) {
+TEST(Aliased2d, ByDefaultEveryTrackStartsFromTheStartAsPaperAWithObjectMeansDrawn) {
   const Aliased2dScenario scenario = defaultAliased2dScenario();
+  for (int track = 0; track < 3; ++track) {
+    const MeasurementLog log = simulateAliased2dTrack(scenario, 7, track, 2, 3);
+    EXPECT_TRUE(std::get<SE2>(log.header.initialPose->mean).equals(scenario.start, 0.0));
+    EXPECT_FALSE(std::get<SE2>(log.header.landmarkPriors[0].mean).equals(scenario.objects[0].pose, 1e-6));
+  }
+}
+
+TEST(Aliased2d, TheObjectMeansDoNotDependOnHowTheFirstPoseMeanIsChosen) {
+  Aliased2dScenario start = defaultAliased2dScenario(), sampled = start;
+  start.priors.poseMean = PoseMean::Start;
+  sampled.priors.poseMean = PoseMean::Sampled;
+  const MeasurementLog a = simulateAliased2dTrack(start, 5, 0, 3);
+  const MeasurementLog b = simulateAliased2dTrack(sampled, 5, 0, 3);
+  EXPECT_FALSE(std::get<SE2>(b.header.initialPose->mean).equals(sampled.start, 1e-6));
+  for (std::size_t i = 0; i < 6; ++i) {
+    EXPECT_TRUE(std::get<SE2>(a.header.landmarkPriors[i].mean).equals(std::get<SE2>(b.header.landmarkPriors[i].mean), 0.0));
+  }
+}
+
+TEST(Aliased2d, NoiseMatchesTheStatedCovariances) {
+  Aliased2dScenario scenario = defaultAliased2dScenario();
+  scenario.priors.poseMean = PoseMean::Sampled;  // so that the first pose's prior mean is drawn too
   const AnalyticViewpointClassifier classifier(scenario.alpha, scenario.sharpness);
   const RangeBearingSensor2 sensor(scenario.sensor.bodyToSensor);
   MomentCheck motion(3), geometry(2), scores(2), objectPriors(3), posePriors(3);

@@ -19,7 +19,7 @@ const std::string kExample = std::string(SEMSLAM_SOURCE_DIR) + "/data/scenarios/
 
 /// A minimal valid scenario with `extra` spliced into the top-level object.
 std::string minimalScenario(const std::string& extra = "") {
-  return R"({"format": "semslam-scenario", "version": 1, "kind": "aliased2d",
+  return R"({"format": "semslam-scenario", "version": 2, "kind": "aliased2d",
   "objects": [{"id": 3, "class": 1, "pose": [1, 2, 0.5]}],
   "start": [0, 0, 0],
   "motion": {"arena": {"center": [0, 0], "radius": 5}})" +
@@ -73,7 +73,8 @@ TEST(ScenarioFile, WriteReadWriteIsStable) {
   Aliased2dScenario scenario = defaultAliased2dScenario();
   scenario.name = "a \"quoted\" name";
   scenario.alpha = 0.1;
-  scenario.priors.means = PriorMeans::Truth;
+  scenario.priors.poseMean = PoseMean::Sampled;
+  scenario.priors.objectMeans = ObjectMeans::Truth;
   scenario.objects[2].pose = SE2(0.1, -0.3, 2.9);
   scenario.motion.covariance(0, 1) = scenario.motion.covariance(1, 0) = 1e-4;
   const std::string path = folder.file("s.json");
@@ -81,6 +82,22 @@ TEST(ScenarioFile, WriteReadWriteIsStable) {
   const Aliased2dScenario read = readAliased2dScenario(path);
   EXPECT_TRUE(read == scenario);
   EXPECT_EQ(aliased2dScenarioToJson(read), test::fileBytes(path));
+}
+
+TEST(ScenarioFile, VersionOneFilesAreReadAsTheyWereMeant) {
+  // Version 1 had one "means" for both priors, "sampled" by default.
+  std::string v1 = minimalScenario();
+  v1.replace(v1.find("\"version\": 2"), 12, "\"version\": 1");
+  const Aliased2dScenario omitted = parseAliased2dScenario(v1, "v1.json");
+  EXPECT_EQ(omitted.priors.poseMean, PoseMean::Sampled);
+  EXPECT_EQ(omitted.priors.objectMeans, ObjectMeans::Sampled);
+  const Aliased2dScenario truth =
+      parseAliased2dScenario(v1.substr(0, v1.rfind('}')) + ", \"priors\": {\"means\": \"truth\"}}", "v1.json");
+  EXPECT_EQ(truth.priors.poseMean, PoseMean::Start);
+  EXPECT_EQ(truth.priors.objectMeans, ObjectMeans::Truth);
+  const Aliased2dScenario v2 = parseAliased2dScenario(minimalScenario(), "v2.json");
+  EXPECT_EQ(v2.priors.poseMean, PoseMean::Start);
+  EXPECT_EQ(v2.priors.objectMeans, ObjectMeans::Sampled);
 }
 
 TEST(ScenarioFile, OmittedFieldsTakeTheDefaultsAndTheNameIsTheStem) {
@@ -122,24 +139,24 @@ TEST(ScenarioFile, SyntaxErrorsGiveTheLine) {
 
 TEST(ScenarioFile, StructuralErrorsNameTheField) {
   expectError(minimalScenario(", \"colour\": 1"), {"unknown field 'colour'", "accepted:"});
-  expectError(R"({"format": "semslam-scenario", "version": 1, "kind": "aliased2d", "start": [0, 0, 0],
+  expectError(R"({"format": "semslam-scenario", "version": 2, "kind": "aliased2d", "start": [0, 0, 0],
                   "motion": {"arena": {"center": [0, 0], "radius": 5}}})",
               {"missing field 'objects'"});
   expectError(minimalScenario(", \"sensor\": {\"max_range\": \"far\"}"), {"sensor.max_range", "expected a number"});
   expectError(minimalScenario(", \"start\": [0, 0]"), {"duplicate key 'start'"});
-  expectError(R"({"format": "semslam-scenario", "version": 1, "kind": "aliased2d",
+  expectError(R"({"format": "semslam-scenario", "version": 2, "kind": "aliased2d",
                   "objects": [{"id": 0, "class": 0, "pose": [1, 2]}], "start": [0, 0, 0],
                   "motion": {"arena": {"center": [0, 0], "radius": 5}}})",
               {"objects[0].pose", "expected 3 numbers"});
-  expectError(R"({"format": "semslam-scenario", "version": 1, "kind": "aliased2d",
+  expectError(R"({"format": "semslam-scenario", "version": 2, "kind": "aliased2d",
                   "objects": [{"id": 0, "class": 0.5, "pose": [1, 2, 0]}], "start": [0, 0, 0],
                   "motion": {"arena": {"center": [0, 0], "radius": 5}}})",
               {"objects[0].class", "integer"});
-  expectError(R"({"format": "semslam-scenario", "version": 1, "kind": "aliased2d", "objects": [],
+  expectError(R"({"format": "semslam-scenario", "version": 2, "kind": "aliased2d", "objects": [],
                   "start": [0, 0, 0], "motion": {"arena": {"center": [0, 0], "radius": 5}}})",
               {"objects", "at least one object"});
   expectError(minimalScenario(", \"sensor\": {\"max_range\": null}"), {"sensor.max_range", "finite"});
-  expectError(R"({"format": "semslam-scenario", "version": 1, "kind": "aliased2d",
+  expectError(R"({"format": "semslam-scenario", "version": 2, "kind": "aliased2d",
                   "objects": [{"id": 0, "class": 0, "pose": [1, 2, 0]}], "start": [0, 0, 0], "motion": {}})",
               {"motion", "missing field 'arena'"});
 }
@@ -148,8 +165,8 @@ TEST(ScenarioFile, HeaderErrors) {
   std::string text = minimalScenario();
   expectError(std::string(text).replace(text.find("semslam-scenario"), 16, "semslam-log"),
               {"format", "semslam-scenario"});
-  expectError(std::string(text).replace(text.find("\"version\": 1"), 12, "\"version\": 2"),
-              {"version 2 is not supported"});
+  expectError(std::string(text).replace(text.find("\"version\": 2"), 12, "\"version\": 3"),
+              {"version 3 is not supported", "versions 1 to 2"});
   expectError(std::string(text).replace(text.find("aliased2d"), 9, "aliased3d"), {"unknown scenario kind"});
 }
 
@@ -158,37 +175,39 @@ TEST(ScenarioFile, ValueErrorsNameTheField) {
               {"priors.object_covariance", "not positive definite"});
   expectError(minimalScenario(", \"priors\": {\"object_covariance\": [[1, 0.5, 0], [0, 1, 0], [0, 0, 1]]}"),
               {"priors.object_covariance", "not symmetric"});
-  expectError(minimalScenario(", \"priors\": {\"means\": \"drawn\"}"), {"priors.means", "sampled, truth"});
+  expectError(minimalScenario(", \"priors\": {\"pose_mean\": \"drawn\"}"), {"priors.pose_mean", "start, sampled"});
+  expectError(minimalScenario(", \"priors\": {\"object_means\": \"drawn\"}"), {"priors.object_means", "sampled, truth"});
+  expectError(minimalScenario(", \"priors\": {\"means\": \"truth\"}"), {"means", "pose_mean", "object_means"});
   expectError(minimalScenario(", \"classes\": 3"), {"classes", "2 classes"});
   expectError(minimalScenario(", \"classifier\": {\"alpha\": 1.5}"), {"classifier.alpha", "[0, 1]"});
   expectError(minimalScenario(", \"classifier\": {\"sharpness\": 0}"), {"classifier.sharpness", "positive"});
   expectError(minimalScenario(", \"sensor\": {\"field_of_view\": 7}"), {"sensor.field_of_view"});
   expectError(minimalScenario(", \"sensor\": {\"max_range\": -1}"), {"sensor.max_range", ">= 0"});
-  expectError(R"({"format": "semslam-scenario", "version": 1, "kind": "aliased2d",
+  expectError(R"({"format": "semslam-scenario", "version": 2, "kind": "aliased2d",
                   "objects": [{"id": 0, "class": 0, "pose": [1, 2, 0]}, {"id": 0, "class": 0, "pose": [3, 2, 0]}],
                   "start": [0, 0, 0], "motion": {"arena": {"center": [0, 0], "radius": 5}}})",
               {"objects[1].id", "duplicate id 0"});
-  expectError(R"({"format": "semslam-scenario", "version": 1, "kind": "aliased2d",
+  expectError(R"({"format": "semslam-scenario", "version": 2, "kind": "aliased2d",
                   "objects": [{"id": 0, "class": 2, "pose": [1, 2, 0]}],
                   "start": [0, 0, 0], "motion": {"arena": {"center": [0, 0], "radius": 5}}})",
               {"objects[0].class", "[0, 1]"});
-  expectError(R"({"format": "semslam-scenario", "version": 1, "kind": "aliased2d",
+  expectError(R"({"format": "semslam-scenario", "version": 2, "kind": "aliased2d",
                   "objects": [{"id": 0, "class": 0, "pose": [1, 2, 0]}], "start": [0, 0, 0],
                   "motion": {"step_length": 0, "arena": {"center": [0, 0], "radius": 5}}})",
               {"motion.step_length", "positive"});
-  expectError(R"({"format": "semslam-scenario", "version": 1, "kind": "aliased2d",
+  expectError(R"({"format": "semslam-scenario", "version": 2, "kind": "aliased2d",
                   "objects": [{"id": 0, "class": 0, "pose": [1, 2, 0]}], "start": [0, 0, 0],
                   "motion": {"max_turn": 4, "arena": {"center": [0, 0], "radius": 5}}})",
               {"motion.max_turn"});
-  expectError(R"({"format": "semslam-scenario", "version": 1, "kind": "aliased2d",
+  expectError(R"({"format": "semslam-scenario", "version": 2, "kind": "aliased2d",
                   "objects": [{"id": 0, "class": 0, "pose": [1, 2, 0]}], "start": [0, 0, 0],
                   "motion": {"arena": {"center": [0, 0], "radius": 0}}})",
               {"motion.arena.radius", "positive"});
-  expectError(R"({"format": "semslam-scenario", "version": 1, "kind": "aliased2d",
+  expectError(R"({"format": "semslam-scenario", "version": 2, "kind": "aliased2d",
                   "objects": [{"id": 0, "class": 0, "pose": [1, 2, 0]}], "start": [0, 0, 0],
                   "motion": {"arena": {"center": [0, 0], "radius": 2}, "time_step": -1}})",
               {"motion.time_step", "positive"});
-  expectError(R"({"format": "semslam-scenario", "version": 1, "kind": "aliased2d",
+  expectError(R"({"format": "semslam-scenario", "version": 2, "kind": "aliased2d",
                   "objects": [{"id": 0, "class": 0, "pose": [1, 2, 0]}], "start": [0, 0, 0],
                   "motion": {"arena": {"center": [0, 0], "radius": 2}, "clearance": -0.5}})",
               {"motion.clearance", ">= 0"});

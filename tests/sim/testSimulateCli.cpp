@@ -53,6 +53,26 @@ TEST(SimulateCli, SeveralTracksGoToAFolder) {
   EXPECT_EQ(test::fileBytes(out + "/track_003.jsonl"), test::fileBytes(again + "/track_003.jsonl"));
 }
 
+TEST(SimulateCli, ALayoutSeedGivesTheGeneratedLayoutAndExcludesAScenarioFile) {
+  ScratchFolder folder;
+  const std::string written = folder.file("layout1.json");
+  const auto result = runSemslam("simulate aliased2d --layout-seed 1 --write-scenario " + quoted(written));
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_EQ(test::fileBytes(written),
+            test::fileBytes(std::string(SEMSLAM_SOURCE_DIR) + "/data/scenarios/aliased2d_layout_1.json"));
+  // The layout's tracks are those of its scenario file.
+  const std::string fromSeed = folder.file("seed.jsonl"), fromFile = folder.file("file.jsonl");
+  ASSERT_EQ(runSemslam("simulate aliased2d --layout-seed 1 --steps 5 --out " + quoted(fromSeed)).exitCode, 0);
+  ASSERT_EQ(runSemslam("simulate aliased2d --scenario " + quoted(written) + " --steps 5 --out " + quoted(fromFile))
+                .exitCode,
+            0);
+  EXPECT_EQ(test::fileBytes(fromSeed), test::fileBytes(fromFile));
+  const auto both = runSemslam("simulate aliased2d --layout-seed 1 --scenario " + quoted(written) + " --out " +
+                               quoted(folder.file("both.jsonl")));
+  EXPECT_NE(both.exitCode, 0);
+  EXPECT_NE(both.output.find("excludes"), std::string::npos) << both.output;
+}
+
 TEST(SimulateCli, WriteScenarioReproducesTheShippedExample) {
   ScratchFolder folder;
   const std::string written = folder.file("default.json");

@@ -97,6 +97,7 @@ HybridStepReport HybridBelief::update(const TimeStep& step) {
   for (const AssociationCandidate& c : candidates) logWeights.push_back(c.logWeight);
   const PruningResult pruned = pruneAndNormalize(logWeights, options_.pruneRatio, options_.maxComponents);
   report.prunedMass = pruned.prunedMass;
+  report.cappedComponents = pruned.capped;
 
   // 4. Observation update of the survivors (lines 9-11): b[X_k] ∝ P(Z_k | X_k, C, β_k) b⁻[X_k] (A, eq. 9-10).
   std::vector<HybridComponent> next;

@@ -31,6 +31,7 @@ struct HybridStepReport {
   std::size_t parents = 0;
   std::size_t survivors = 0;
   double prunedMass = 0.0;
+  std::size_t cappedComponents = 0;  ///< survivors of the pruning ratio dropped by HybridOptions::maxComponents
   PropWeightsReport weights;
   double seconds = 0.0;
 };

@@ -41,6 +41,7 @@ void HybridOptions::validate() const {
     throw std::invalid_argument("hybrid: joint-compatibility confidence must be in (0, 1)");
   }
   if (maxComponents < 0) throw std::invalid_argument("hybrid: max components must be >= 0");
+  if (maxCandidates < 1) throw std::invalid_argument("hybrid: max candidates must be >= 1");
 }
 
 }  // namespace semslam

@@ -20,7 +20,15 @@
 //                       Algorithm 1; OneDetectionAtATime: branch detection by detection, keeping only partial
 //                       associations whose stacked innovation passes a joint-compatibility χ² test at
 //                       `jointCompatibility` and pruning partial hypotheses between detections.
-//   maxComponents       after pruning keep at most this many (heaviest); 0: no cap.
+//   maxComponents       after pruning keep at most this many (heaviest); 0: no cap. With maxCandidates, what bounds
+//                       the memory of a run (docs/hybrid-belief.md, "Bounded memory"): every component holds its own
+//                       smoother, a copy of its whole factor graph, so the default cap is kDefaultMaxComponents.
+//   maxCandidates       the candidate children one step may hold at once. WholeAssociation counts, before
+//                       branching, an upper bound of the step's candidates, Σ_parents N!/(N−n)! · M^n (n detections,
+//                       N objects, M classes when semantics enumerate them); past this bound the step branches one
+//                       detection at a time instead (reported: PropWeightsReport::branchedOneAtATime).
+//                       OneDetectionAtATime keeps at most this many partial associations between detections, the
+//                       heaviest by linearised weight (reported: truncatedPartials).
 //   enumerateAllClasses start from all M^N class realizations instead of collapsing unassociated objects
 //                       (A sec. IV-D); for tests that check collapsing.
 //   visibility          multiply sampled weights by the object observation model P(β_k | x_k, X^o) (A eq. 14-16).
@@ -49,6 +57,9 @@ enum class Branching { WholeAssociation, OneDetectionAtATime };
 SmootherFactory defaultSmootherFactory();
 
 struct HybridOptions {
+  static constexpr int kDefaultMaxComponents = 1000;
+  static constexpr int kDefaultMaxCandidates = 100000;
+
   bool useSemantics = true;
   WeightMethod weights = WeightMethod::Sampled;
   int samples = 1000;
@@ -57,14 +68,15 @@ struct HybridOptions {
   double gateRatio = 1e5;
   Branching branching = Branching::WholeAssociation;
   double jointCompatibility = 0.999;
-  int maxComponents = 0;
+  int maxComponents = kDefaultMaxComponents;
+  int maxCandidates = kDefaultMaxCandidates;
   bool enumerateAllClasses = false;
   bool visibility = true;
   std::uint64_t seed = 1;
   SmootherFactory smootherFactory;  // empty: defaultSmootherFactory()
 
-  /// Throws std::invalid_argument for samples < 2, importanceIterations < 1, non-finite ratios, jointCompatibility outside (0, 1) or
-  /// maxComponents < 0.
+  /// Throws std::invalid_argument for samples < 2, importanceIterations < 1, non-finite ratios, jointCompatibility outside (0, 1),
+  /// maxComponents < 0 or maxCandidates < 1.
   void validate() const;
 };
 

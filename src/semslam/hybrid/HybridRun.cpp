@@ -1,6 +1,8 @@
 #include "semslam/hybrid/HybridRun.h"
 
+#include <algorithm>
 #include <chrono>
+#include <sstream>
 
 namespace semslam {
 
@@ -53,6 +55,43 @@ HybridRunOutput runHybrid(const MeasurementLog& log, const HybridOptions& option
   }
   result.timeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
+}
+
+std::string describeBoundsThatBound(const std::vector<HybridStepRecord>& steps, const HybridOptions& options) {
+  int branched = 0, truncated = 0, capped = 0;
+  double largestBound = 0.0;
+  std::size_t largestCapped = 0;
+  for (const HybridStepRecord& step : steps) {
+    const PropWeightsReport& weights = step.report.weights;
+    if (weights.branchedOneAtATime) {
+      ++branched;
+      largestBound = std::max(largestBound, weights.wholeAssociationBound);
+    }
+    if (weights.truncatedPartials > 0) ++truncated;
+    if (step.report.cappedComponents > 0) {
+      ++capped;
+      largestCapped = std::max(largestCapped, step.report.cappedComponents);
+    }
+  }
+  std::ostringstream text;
+  if (branched > 0) {
+    text << "whole-association branching would have held up to " << largestBound << " candidates at a step (more "
+         << "than --max-candidates " << options.maxCandidates << "), so " << branched
+         << " step(s) branched one detection at a time (joint-compatibility test); ";
+  }
+  if (truncated > 0) {
+    text << truncated << " step(s) kept only the " << options.maxCandidates
+         << " heaviest partial associations (--max-candidates); ";
+  }
+  if (capped > 0) {
+    text << "the component cap (--max-components " << options.maxComponents << ") dropped up to " << largestCapped
+         << " components at " << capped << " step(s); ";
+  }
+  std::string sentence = text.str();
+  if (sentence.empty()) return sentence;
+  sentence.resize(sentence.size() - 2);  // the last "; "
+  return "the hybrid belief's memory bounds bound: " + sentence +
+         " (docs/hybrid-belief.md, \"Bounded memory\": raise the bounds if memory allows)";
 }
 
 }  // namespace semslam

@@ -9,6 +9,7 @@
 // method is "hybrid" (semantics) or "hybrid-geometric" (options.useSemantics = false).
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "semslam/models/RunResult.h"
@@ -29,6 +30,10 @@ struct HybridRunOutput {
 
 /// Progress callback: (steps done, steps in all).
 using HybridProgress = std::function<void(int, int)>;
+
+/// What the memory bounds of `options` (HybridOptions: maxCandidates, maxComponents) did over a run, as a sentence a
+/// user can act on; empty when no bound bound at any step.
+std::string describeBoundsThatBound(const std::vector<HybridStepRecord>& steps, const HybridOptions& options);
 
 /// Runs the log (InputError for a log the hybrid belief cannot take: HybridProblem.h).
 HybridRunOutput runHybrid(const MeasurementLog& log, const HybridOptions& options,

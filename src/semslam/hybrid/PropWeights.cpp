@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <tuple>
 
 #include "semslam/association/AssociationGate.h"
@@ -130,6 +131,35 @@ AssociationCandidate root(const PropagatedParent& parent, std::size_t index) {
   return candidate;
 }
 
+/// The upper bound of whole-association candidates: Σ_parents N!/(N−n)! · M^n (M = 1 without class enumeration), in
+/// floating point so that it cannot overflow.
+double wholeAssociationBound(const HybridProblem& problem, std::size_t parents, std::size_t detections) {
+  double perParent = 1.0;
+  for (std::size_t i = 0; i < detections; ++i) {
+    perParent *= std::max(0.0, static_cast<double>(problem.objects()) - static_cast<double>(i));
+    if (problem.enumeratesClasses()) perParent *= problem.classes();
+  }
+  return perParent * static_cast<double>(parents);
+}
+
+/// Keeps the `cap` heaviest of `candidates` by gate weight (earlier first among ties), in their order.
+std::size_t keepHeaviest(std::vector<AssociationCandidate>& candidates, std::size_t cap) {
+  if (candidates.size() <= cap) return 0;
+  std::vector<std::size_t> order(candidates.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return candidates[a].gateLogWeight > candidates[b].gateLogWeight;
+  });
+  order.resize(cap);
+  std::sort(order.begin(), order.end());
+  std::vector<AssociationCandidate> kept;
+  kept.reserve(cap);
+  for (std::size_t i : order) kept.push_back(std::move(candidates[i]));
+  const std::size_t dropped = candidates.size() - cap;
+  candidates = std::move(kept);
+  return dropped;
+}
+
 std::vector<AssociationCandidate> wholeAssociations(const HybridProblem& problem,
                                                     const std::vector<PropagatedParent>& parents, int k,
                                                     const std::vector<Detection>& detections) {
@@ -160,6 +190,7 @@ std::vector<AssociationCandidate> oneDetectionAtATime(const HybridProblem& probl
                                                       PropWeightsReport& report) {
   const Key pose = poseKey(static_cast<std::uint64_t>(k));
   const AssociationGate compatibility(options.jointCompatibility);
+  const std::size_t candidateCap = static_cast<std::size_t>(options.maxCandidates);
   std::vector<FactorCache> caches;
   std::vector<AssociationCandidate> partials;
   for (std::size_t p = 0; p < parents.size(); ++p) {
@@ -176,8 +207,10 @@ std::vector<AssociationCandidate> oneDetectionAtATime(const HybridProblem& probl
         for (const FactorPtr& f : child.gateFactors) dimension += f->errorDimension();
         // Joint compatibility: the stacked innovation passes the χ² test at its dimension.
         if (child.innovationChi2 <= compatibility.threshold(dimension)) next.push_back(std::move(child));
+        if (next.size() >= 2 * candidateCap) report.truncatedPartials += keepHeaviest(next, candidateCap);
       });
     }
+    report.truncatedPartials += keepHeaviest(next, candidateCap);
     if (next.empty()) {  // no partial association can take detection i: drop it everywhere
       ++report.droppedDetections;
       for (AssociationCandidate& partial : partials) partial.beta.push_back(-1);
@@ -201,10 +234,15 @@ std::vector<AssociationCandidate> propagateWeights(const HybridProblem& problem,
                                                    const std::vector<PropagatedParent>& parents, int k,
                                                    const std::vector<Detection>& detections, std::mt19937& rng,
                                                    PropWeightsReport& report) {
+  bool whole = options.branching == Branching::WholeAssociation;
+  if (whole) {
+    report.wholeAssociationBound = wholeAssociationBound(problem, parents.size(), detections.size());
+    report.branchedOneAtATime = report.wholeAssociationBound > static_cast<double>(options.maxCandidates);
+    whole = !report.branchedOneAtATime;
+  }
   std::vector<AssociationCandidate> candidates =
-      options.branching == Branching::WholeAssociation
-          ? wholeAssociations(problem, parents, k, detections)
-          : oneDetectionAtATime(problem, options, parents, k, detections, report);
+      whole ? wholeAssociations(problem, parents, k, detections)
+            : oneDetectionAtATime(problem, options, parents, k, detections, report);
   report.candidates = candidates.size();
   if (candidates.empty()) return candidates;
 

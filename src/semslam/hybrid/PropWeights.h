@@ -29,6 +29,11 @@
 // Gate: before sampling, a candidate whose ℓ_gate < max ℓ_gate − log(gateRatio) is skipped (weight 0); the
 // linearised mass it held, Σ_gated exp(ℓ_gate) / Σ_all exp(ℓ_gate), is reported as the gate's lost mass.
 // The joint-compatibility test of one-detection-at-a-time branching uses the gate factors' innovation.
+// Bounds (HybridOptions: maxCandidates): whole-association branching first counts an upper bound of its
+// candidates, Σ_parents N!/(N−n)! · M^n, and past options.maxCandidates branches one detection at a time instead;
+// one-detection-at-a-time branching keeps at most options.maxCandidates partial associations (the heaviest by
+// linearised gate weight, earlier first among ties), pruning its working list whenever it reaches twice that, so
+// no step holds more than 2 · maxCandidates candidates.
 // Fallback: when every sampled weight is zero (no sample makes any candidate visible), the linearised weights
 // are used for that step and the fallback is reported.
 
@@ -68,6 +73,9 @@ struct PropWeightsReport {
   double analyticTotalVariation = 0.0;  ///< ½ Σ |w_sampled − w_lin| over the sampled candidates (normalised each)
   int droppedDetections = 0;
   bool fellBackToLinearized = false;
+  bool branchedOneAtATime = false;      ///< WholeAssociation past options.maxCandidates: this step went one at a time
+  double wholeAssociationBound = 0.0;   ///< WholeAssociation: the upper bound of the step's candidates counted
+  std::size_t truncatedPartials = 0;    ///< OneDetectionAtATime: partial associations dropped by maxCandidates
   double samplingSeconds = 0.0;
 };
 

@@ -32,13 +32,14 @@ PruningResult pruneAndNormalize(const std::vector<double>& logWeights, double ra
   for (std::size_t i = 0; i < weights.size(); ++i) {
     if (weights[i] > 0.0 && weights[i] >= threshold) survivors.push_back(i);
   }
+  PruningResult result;
   if (maxComponents > 0 && survivors.size() > static_cast<std::size_t>(maxComponents)) {
+    result.capped = survivors.size() - static_cast<std::size_t>(maxComponents);
     std::stable_sort(survivors.begin(), survivors.end(),
                      [&](std::size_t a, std::size_t b) { return weights[a] > weights[b]; });
     survivors.resize(static_cast<std::size_t>(maxComponents));
     std::sort(survivors.begin(), survivors.end());
   }
-  PruningResult result;
   result.kept = survivors;
   double keptMass = 0.0;
   for (std::size_t i : survivors) keptMass += weights[i];

@@ -19,6 +19,7 @@ struct PruningResult {
   std::vector<std::size_t> kept;  ///< indices into the input, increasing
   std::vector<double> weights;    ///< normalised weights of the kept, same order
   double prunedMass = 0.0;        ///< Σ of the normalised input weights that were pruned
+  std::size_t capped = 0;         ///< inputs that passed the ratio but not the maxComponents cap
 };
 
 PruningResult pruneAndNormalize(const std::vector<double>& logWeights, double ratio, int maxComponents = 0);

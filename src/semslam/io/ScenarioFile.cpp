@@ -5,6 +5,8 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "semslam/io/AtomicFile.h"
 #include "semslam/core/InputError.h"
@@ -76,22 +78,42 @@ SE2 poseFrom(const JsonField& field) {
 
 Matrix3 covariance3(const JsonField& field) { return field.covariance(3, "x, y, theta"); }
 
-void readPriors(const JsonField& field, Aliased2dPriors& priors) {
-  field.requireObject({}, {"initial_pose_covariance", "object_covariance", "means"});
+/// One of `names` (the enum's values in order) at `field`, or a failure listing them.
+template <class Enum>
+Enum choice(const JsonField& field, const std::vector<std::pair<std::string, Enum>>& names) {
+  const std::string name = field.string();
+  std::string expected;
+  for (const auto& [text, value] : names) {
+    if (text == name) return value;
+    expected += (expected.empty() ? "" : ", ") + text;
+  }
+  field.fail("unknown value '" + name + "' (expected one of: " + expected + ")");
+}
+
+/// Version 2 states the two means apart; version 1's single "means" set both ("sampled", its default: both drawn;
+/// "truth": the start and the objects' truth), and is still read as it was meant.
+void readPriors(const JsonField& field, Aliased2dPriors& priors, long long version) {
+  if (version == 1) {
+    priors.poseMean = PoseMean::Sampled;
+    field.requireObject({}, {"initial_pose_covariance", "object_covariance", "means"});
+  } else {
+    field.requireObject({}, {"initial_pose_covariance", "object_covariance", "pose_mean", "object_means"});
+  }
   if (field.has("initial_pose_covariance")) {
     priors.initialPoseCovariance = covariance3(field["initial_pose_covariance"]);
   }
   if (field.has("object_covariance")) priors.objectCovariance = covariance3(field["object_covariance"]);
   if (field.has("means")) {
-    const JsonField means = field["means"];
-    const std::string name = means.string();
-    if (name == "sampled") {
-      priors.means = PriorMeans::Sampled;
-    } else if (name == "truth") {
-      priors.means = PriorMeans::Truth;
-    } else {
-      means.fail("unknown value '" + name + "' (expected one of: sampled, truth)");
-    }
+    const bool sampled = choice<bool>(field["means"], {{"sampled", true}, {"truth", false}});
+    priors.poseMean = sampled ? PoseMean::Sampled : PoseMean::Start;
+    priors.objectMeans = sampled ? ObjectMeans::Sampled : ObjectMeans::Truth;
+  }
+  if (field.has("pose_mean")) {
+    priors.poseMean = choice<PoseMean>(field["pose_mean"], {{"start", PoseMean::Start}, {"sampled", PoseMean::Sampled}});
+  }
+  if (field.has("object_means")) {
+    priors.objectMeans =
+        choice<ObjectMeans>(field["object_means"], {{"sampled", ObjectMeans::Sampled}, {"truth", ObjectMeans::Truth}});
   }
 }
 
@@ -150,8 +172,8 @@ Aliased2dScenario parseAliased2dScenario(const std::string& text, const std::str
   }
   const JsonField version = root["version"];
   const long long versionNumber = version.integer(0, 1'000'000);
-  if (versionNumber != kScenarioVersion) {
-    version.fail("version " + std::to_string(versionNumber) + " is not supported (this reader reads version " +
+  if (versionNumber < 1 || versionNumber > kScenarioVersion) {
+    version.fail("version " + std::to_string(versionNumber) + " is not supported (this reader reads versions 1 to " +
                  std::to_string(kScenarioVersion) + ")");
   }
   const std::string kind = root["kind"].string();
@@ -175,7 +197,8 @@ Aliased2dScenario parseAliased2dScenario(const std::string& text, const std::str
     scenario.objects.push_back(object);
   }
   scenario.start = poseFrom(root["start"]);
-  if (root.has("priors")) readPriors(root["priors"], scenario.priors);
+  const Json noPriors = Json::object();  // absent: every prior field takes its default (of the file's version)
+  readPriors(root.has("priors") ? root["priors"] : JsonField(noPriors, location), scenario.priors, versionNumber);
   readMotion(root["motion"], scenario.motion);
   if (root.has("sensor")) readSensor(root["sensor"], scenario.sensor);
   if (root.has("classifier")) {
@@ -221,7 +244,8 @@ std::string aliased2dScenarioToJson(const Aliased2dScenario& scenario) {
   const Aliased2dPriors& priors = scenario.priors;
   root["priors"] = {{"initial_pose_covariance", matrixJson(priors.initialPoseCovariance)},
                     {"object_covariance", matrixJson(priors.objectCovariance)},
-                    {"means", priors.means == PriorMeans::Sampled ? "sampled" : "truth"}};
+                    {"pose_mean", poseMeanName(priors.poseMean)},
+                    {"object_means", objectMeansName(priors.objectMeans)}};
   const Aliased2dMotion& motion = scenario.motion;
   root["motion"] = {{"covariance", matrixJson(motion.covariance)},
                     {"step_length", motion.stepLength},

@@ -3,10 +3,11 @@
 // The format, with a complete example, is specified in docs/simulators.md; data/scenarios/aliased2d_default.json
 // is the built-in default written by writeAliased2dScenario.
 //
-//   {"format": "semslam-scenario", "version": 1, "kind": "aliased2d", "name": "...", "classes": 2,
+//   {"format": "semslam-scenario", "version": 2, "kind": "aliased2d", "name": "...", "classes": 2,
 //    "objects": [{"id": 0, "class": 0, "pose": [x, y, theta]}, ...],
 //    "start": [x, y, theta],
-//    "priors": {"initial_pose_covariance": [[..]], "object_covariance": [[..]], "means": "sampled"|"truth"},
+//    "priors": {"initial_pose_covariance": [[..]], "object_covariance": [[..]], "pose_mean": "start"|"sampled",
+//               "object_means": "sampled"|"truth"},
 //    "motion": {"covariance": [[..]], "step_length": 1, "max_turn": 0.35,
 //               "arena": {"center": [x, y], "radius": r}, "clearance": 1, "time_step": 1},
 //    "sensor": {"body_to_sensor": [x, y, theta], "max_range": 6, "field_of_view": 1.57, "covariance": [[..]]},
@@ -14,7 +15,8 @@
 //
 // Required: format, version, kind, objects, start, motion.arena (what depends on the layout). Every other field
 // may be left out and then takes the built-in default's value (paper A's priors, noise and classifier); a
-// missing name is the file's stem.
+// missing name is the file's stem. Version 1 files (one "means": "sampled" | "truth" for both priors' means) are
+// still read; the writer writes version 2.
 //
 // Reading validates everything and throws InputError(file, line, problem) at the first problem: invalid JSON
 // (with the line where parsing stopped), a duplicate or unknown key (the message lists the accepted ones), a
@@ -33,7 +35,7 @@
 namespace semslam {
 
 inline constexpr const char* kScenarioFormat = "semslam-scenario";
-inline constexpr int kScenarioVersion = 1;
+inline constexpr int kScenarioVersion = 2;  // the version written; 1 is still read
 
 /// Reads and validates an aliased2d scenario file. Throws InputError.
 Aliased2dScenario readAliased2dScenario(const std::string& path);

@@ -57,9 +57,13 @@ bool Aliased2dObject::operator==(const Aliased2dObject& other) const {
   return id == other.id && classIndex == other.classIndex && sameSE2(pose, other.pose);
 }
 
+std::string poseMeanName(PoseMean mean) { return mean == PoseMean::Start ? "start" : "sampled"; }
+
+std::string objectMeansName(ObjectMeans means) { return means == ObjectMeans::Sampled ? "sampled" : "truth"; }
+
 bool Aliased2dPriors::operator==(const Aliased2dPriors& other) const {
   return initialPoseCovariance == other.initialPoseCovariance && objectCovariance == other.objectCovariance &&
-         means == other.means;
+         poseMean == other.poseMean && objectMeans == other.objectMeans;
 }
 
 bool Aliased2dMotion::operator==(const Aliased2dMotion& other) const {
@@ -101,7 +105,8 @@ Aliased2dScenario defaultAliased2dScenario() {
   // Paper A, sec. V.
   scenario.priors.initialPoseCovariance = diagonal<Matrix3>({100.0, 100.0, 0.04});
   scenario.priors.objectCovariance = diagonal<Matrix3>({0.05, 0.05, 0.5e-3});
-  scenario.priors.means = PriorMeans::Sampled;
+  scenario.priors.poseMean = PoseMean::Start;  // paper A, sec. V
+  scenario.priors.objectMeans = ObjectMeans::Sampled;
   scenario.motion.covariance = diagonal<Matrix3>({0.75e-3, 0.75e-3, 0.25e-3});
   scenario.motion.stepLength = 1.0;
   scenario.motion.maxTurn = 0.35;

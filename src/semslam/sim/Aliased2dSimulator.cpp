@@ -30,8 +30,8 @@ std::string sourceText(const Aliased2dScenario& scenario, std::uint64_t seed, in
   text.precision(17);
   text << "semslam simulate aliased2d: scenario '" << scenario.name << "', seed " << seed << ", track " << track
        << " of " << tracks << ", " << steps << " steps, alpha " << scenario.alpha << ", sharpness "
-       << scenario.sharpness << ", prior means "
-       << (scenario.priors.means == PriorMeans::Sampled ? "sampled" : "truth");
+       << scenario.sharpness << ", prior mean of the first pose " << poseMeanName(scenario.priors.poseMean)
+       << ", of the objects " << objectMeansName(scenario.priors.objectMeans);
   return text.str();
 }
 
@@ -91,7 +91,6 @@ MeasurementLog simulateAliased2dTrack(const Aliased2dScenario& scenario, std::ui
                                     scenario.sensor.bodyToSensor);
   const Matrix measurementCovariance = scenario.sensor.covariance;
   const Matrix motionCovariance = scenario.motion.covariance;
-  const bool sampledMeans = scenario.priors.means == PriorMeans::Sampled;
 
   MeasurementLog log;
   LogHeader& header = log.header;
@@ -106,16 +105,19 @@ MeasurementLog simulateAliased2dTrack(const Aliased2dScenario& scenario, std::ui
   header.sensor.maxRange = scenario.sensor.maxRange;
   header.sensor.fieldOfView = scenario.sensor.fieldOfView;
   header.landmarksHavePose = true;
-  // Prior draws: the initial pose first, then the objects in the scenario's order.
+  // Prior draws: the initial pose first, then the objects in the scenario's order. The first pose's draw is made
+  // whatever its mean's choice, so that the objects' means do not depend on that choice.
   PosePrior initial;
-  initial.mean =
-      sampledMeans ? perturbed(scenario.start, scenario.priors.initialPoseCovariance, priors) : scenario.start;
+  const SE2 sampledStart = perturbed(scenario.start, scenario.priors.initialPoseCovariance, priors);
+  initial.mean = scenario.priors.poseMean == PoseMean::Sampled ? sampledStart : scenario.start;
   initial.covariance = scenario.priors.initialPoseCovariance;
   header.initialPose = initial;
   for (const Aliased2dObject& object : scenario.objects) {
     LandmarkPrior prior;
     prior.id = object.id;
-    prior.mean = sampledMeans ? perturbed(object.pose, scenario.priors.objectCovariance, priors) : object.pose;
+    prior.mean = scenario.priors.objectMeans == ObjectMeans::Sampled
+                     ? perturbed(object.pose, scenario.priors.objectCovariance, priors)
+                     : object.pose;
     prior.covariance = scenario.priors.objectCovariance;
     header.landmarkPriors.push_back(prior);
     header.landmarkTruth.push_back(LandmarkTruth{object.id, object.classIndex, object.pose});

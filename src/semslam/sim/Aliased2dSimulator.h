@@ -18,8 +18,8 @@
 //            listed by increasing measured bearing; time k · time_step; true pose x_k.
 // Header: dimension 2, classes M, semantic "scores", classifier viewpoint-gaussian (alpha, K), the sensor,
 // landmarks_have_pose (objects are SE2 poses), the initial pose prior N(mean, Σ_p) and the object priors
-// N(mean_o, Σ_o) with means drawn around the truth (mean = truth · Exp(δ), δ ~ N(0, Σ)) or equal to it
-// (scenario.priors.means), and the landmark truth (ids, classes, poses).
+// N(mean_o, Σ_o), each mean either drawn around the truth (mean = truth · Exp(δ), δ ~ N(0, Σ)) or the truth itself
+// (scenario.priors.poseMean, objectMeans), and the landmark truth (ids, classes, poses).
 
 #include <cstdint>
 #include <random>

@@ -30,6 +30,7 @@ enum class SimStream : std::uint32_t {
   Path = 7,         // semantic: the shape of a generated path
   Detection = 8,    // semantic: missed detections
   Clutter = 9,      // semantic: false detections
+  Layout = 10,      // aliased2d: a generated object layout (track 0 of the layout seed)
 };
 
 /// The stream `stream` of track `track` for the user seed `seed`.
