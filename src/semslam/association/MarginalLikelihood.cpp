@@ -1,5 +1,6 @@
 #include "semslam/association/MarginalLikelihood.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <vector>
 
@@ -31,32 +32,61 @@ LinearizedLikelihood linearizedLikelihood(std::span<const FactorPtr> factors, co
   return result;
 }
 
-SampledLikelihood sampledLikelihood(std::span<const FactorPtr> factors, const Values& values,
-                                    const JointMarginal& marginal, int samples, std::mt19937& rng,
-                                    const SampleWeight& weight) {
+MarginalSamples::MarginalSamples(const Values& values, const JointMarginal& marginal, int samples,
+                                 std::mt19937& rng) {
   if (samples < 2) throw std::invalid_argument("sampled likelihood needs at least 2 samples");
-  const double normalizers = sumOfLogNormalizers(factors);
   const TangentLayout layout(marginal, values);
-  for (const FactorPtr& factor : factors) {
-    for (Key key : factor->keys()) TangentLayout::indexOf(marginal, key);
+  for (std::size_t i = 0; i < marginal.keys().size(); ++i) {
+    const Key key = marginal.keys()[i];
+    mean_.insert(key, values.value(key));
+    index_.emplace(key, std::make_pair(layout.offsets[i], layout.dimensions[i]));
   }
   const Matrix root = gaussianSquareRoot(marginal.covariance());
-
-  // The sample only needs the marginal's variables: a small Values, perturbed in place per draw.
-  Values sample;
-  for (Key key : marginal.keys()) sample.insert(key, values.value(key));
-  // p(z | H) ≈ (1/n) Σ_s P(Z | X_s) P(β | X_s), X_s drawn from the joint marginal (A, eq. 16-17).
-  std::vector<double> logTerms;
-  logTerms.reserve(samples);
+  offsets_.resize(layout.total, samples);
   Vector n(layout.total);
   for (int s = 0; s < samples; ++s) {
     for (int i = 0; i < layout.total; ++i) n(i) = standardNormal(rng);
-    retractInto(sample, values, marginal, layout, root * n);
+    offsets_.col(s) = root * n;
+  }
+}
+
+Value MarginalSamples::draw(Key key, int s) const {
+  const auto found = index_.find(key);
+  if (found == index_.end()) throw std::invalid_argument("sampled likelihood: a factor's variable is not drawn");
+  const auto [offset, dimension] = found->second;
+  return retract(mean_.value(key), offsets_.col(s).segment(offset, dimension));
+}
+
+SampledLikelihood sampledLikelihood(std::span<const FactorPtr> factors, const MarginalSamples& samples,
+                                    const SampleWeight& weight) {
+  const double normalizers = sumOfLogNormalizers(factors);
+  // The sample holds the factors' variables only, each retracted in place per draw.
+  std::vector<Key> keys;
+  for (const FactorPtr& factor : factors) {
+    for (Key key : factor->keys()) {
+      if (std::find(keys.begin(), keys.end(), key) != keys.end()) continue;
+      if (!samples.holds(key)) throw std::invalid_argument("sampled likelihood: a factor's variable is not drawn");
+      keys.push_back(key);
+    }
+  }
+  Values sample;
+  for (Key key : keys) sample.insert(key, samples.draw(key, 0));
+  // p(z | H) ≈ (1/n) Σ_s P(Z | X_s) P(β | X_s), X_s drawn from the joint marginal (A, eq. 16-17).
+  std::vector<double> logTerms;
+  logTerms.reserve(static_cast<std::size_t>(samples.size()));
+  for (int s = 0; s < samples.size(); ++s) {
+    for (Key key : keys) sample.update(key, samples.draw(key, s));
     double logTerm = -normalizers;
     for (const FactorPtr& factor : factors) logTerm -= 0.5 * factor->chi2(sample);
     logTerms.push_back(logTerm + logSampleWeight(weight, sample));
   }
   return meanOfExponentials(logTerms);
+}
+
+SampledLikelihood sampledLikelihood(std::span<const FactorPtr> factors, const Values& values,
+                                    const JointMarginal& marginal, int samples, std::mt19937& rng,
+                                    const SampleWeight& weight) {
+  return sampledLikelihood(factors, MarginalSamples(values, marginal, samples, rng), weight);
 }
 
 }  // namespace semslam

@@ -26,8 +26,10 @@
 // factor must be in `marginal` and in `values`; otherwise std::invalid_argument.
 
 #include <functional>
+#include <map>
 #include <random>
 #include <span>
+#include <vector>
 
 #include "semslam/graph/Factor.h"
 #include "semslam/graph/Values.h"
@@ -54,7 +56,35 @@ struct SampledLikelihood {
 /// Per-sample weight w(X_s) ≥ 0 (e.g. the visibility model); empty: w ≡ 1.
 using SampleWeight = std::function<double(const Values& sample)>;
 
-/// The Monte Carlo marginal likelihood (A, eq. 17) from `samples` draws of the joint marginal.
+/// Draws X_s = X̄ ⊕ δ_s, δ_s = L n_s (L Lᵀ = Σ the marginal's covariance, n_s ~ N(0, I), one n_s after the other
+/// from `rng`) of a joint marginal, drawn once to be shared: every factor set evaluated on the same MarginalSamples
+/// sees the same draws (common random numbers: the weights of candidates that share a parent carry correlated, not
+/// independent, Monte Carlo errors, so their ratios are less noisy), and the draws' values of a subset of the
+/// variables are draws of that subset's marginal, so one set of draws of x_k and every object serves every
+/// association of a hybrid component (A, eq. 17). Held as X̄ and the tangent offsets δ_s; a factor set's
+/// evaluation retracts only the variables it names.
+class MarginalSamples {
+ public:
+  /// Throws std::invalid_argument for samples < 2 or a marginal that does not fit `values`.
+  MarginalSamples(const Values& values, const JointMarginal& marginal, int samples, std::mt19937& rng);
+  int size() const { return static_cast<int>(offsets_.cols()); }
+  /// X̄_key ⊕ (δ_s)_key; throws std::invalid_argument for a variable the draws do not hold.
+  Value draw(Key key, int s) const;
+  bool holds(Key key) const { return index_.count(key) != 0; }
+
+ private:
+  Values mean_;
+  std::map<Key, std::pair<int, int>> index_;  // key → (tangent offset, dimension)
+  Matrix offsets_;                            // δ_s in column s
+};
+
+/// The Monte Carlo marginal likelihood (A, eq. 16-17) over shared draws: log (1/n) Σ_s P(Z | X_s) w(X_s), where the
+/// sample handed to w holds the factors' variables only. Throws std::invalid_argument when a factor names a variable
+/// the draws do not hold.
+SampledLikelihood sampledLikelihood(std::span<const FactorPtr> factors, const MarginalSamples& samples,
+                                    const SampleWeight& weight = {});
+
+/// The same from `samples` fresh draws of the joint marginal (MarginalSamples(values, marginal, samples, rng)).
 SampledLikelihood sampledLikelihood(std::span<const FactorPtr> factors, const Values& values,
                                     const JointMarginal& marginal, int samples, std::mt19937& rng,
                                     const SampleWeight& weight = {});

@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <tuple>
 
 #include "semslam/association/AssociationGate.h"
@@ -265,6 +266,11 @@ std::vector<AssociationCandidate> propagateWeights(const HybridProblem& problem,
   const Key pose = poseKey(static_cast<std::uint64_t>(k));
   const auto start = std::chrono::steady_clock::now();
   bool anyPositive = false;
+  // Plain Monte Carlo draws x_k and every object once per parent (one Cholesky of the joint marginal) and every
+  // candidate of that parent is weighed on those draws (MarginalSamples: common random numbers). Candidates come
+  // grouped by parent, so one parent's draws are held at a time.
+  std::optional<MarginalSamples> draws;
+  std::size_t drawsParent = 0;
   for (AssociationCandidate& c : candidates) {
     if (c.gated) {
       c.logWeight = kNegativeInfinity;
@@ -275,7 +281,6 @@ std::vector<AssociationCandidate> propagateWeights(const HybridProblem& problem,
     } else {
       const PropagatedParent& parent = parents[c.parent];
       const std::vector<Key> keys = integralKeys(pose, c.beta);
-      const JointMarginal marginal = parent.joint.restrictedTo(keys);  // b⁻[x_k, X^o_β] (A, eq. 17)
       SampleWeight visibility;
       if (options.visibility) {  // the object observation model P(β_k | x_k, X^o_β) (A, eq. 14, 16)
         visibility = [&problem, &keys](const Values& sample) {
@@ -290,11 +295,18 @@ std::vector<AssociationCandidate> propagateWeights(const HybridProblem& problem,
           return problem.visibility().associationFeasible(robot, positions, beta) ? 1.0 : 0.0;
         };
       }
-      const SampledLikelihood likelihood =
-          options.weights == WeightMethod::Importance
-              ? importanceSampledLikelihood(c.factors, parent.smoother->estimate(), marginal, options.samples, rng,
-                                            visibility, ImportanceProposal{options.importanceIterations})
-              : sampledLikelihood(c.factors, parent.smoother->estimate(), marginal, options.samples, rng, visibility);
+      SampledLikelihood likelihood;
+      if (options.weights == WeightMethod::Importance) {
+        const JointMarginal marginal = parent.joint.restrictedTo(keys);  // b⁻[x_k, X^o_β] (A, eq. 17)
+        likelihood = importanceSampledLikelihood(c.factors, parent.smoother->estimate(), marginal, options.samples,
+                                                 rng, visibility, ImportanceProposal{options.importanceIterations});
+      } else {
+        if (!draws || drawsParent != c.parent) {
+          draws.emplace(parent.smoother->estimate(), parent.joint, options.samples, rng);  // b⁻[x_k, X^o]
+          drawsParent = c.parent;
+        }
+        likelihood = sampledLikelihood(c.factors, *draws, visibility);
+      }
       // w_β1:k ∝ w_β1:k−1 · (1/n_s) Σ_s P(Z_k | X_s) P(β_k | X_s) (A, eq. 16-17)
       c.logWeight = std::log(parent.component->weight) + likelihood.logLikelihood + c.logConstant;
       c.relativeStandardError = likelihood.relativeStandardError;

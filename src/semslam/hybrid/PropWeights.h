@@ -20,7 +20,8 @@
 //                their linearisation in θ is poor under a broad prior);
 //   sampled      ℓ     = log w_parent + log (1/n_s) Σ_s P(Z | X_s) P(β | X_s) + log-constants     (eq. 16)
 //                with P(β | X_s) the visibility indicator (VisibilityModel2::associationFeasible) when enabled,
-//                X_s drawn from the joint marginal (eq. 17);
+//                X_s drawn from the joint marginal (eq. 17) of x_k and every object, once per parent: the candidates
+//                of one parent are weighed on the same n_s draws (MarginalSamples, common random numbers);
 //   importance   ℓ     = log w_parent + log (1/n_s) Σ_s P(Z | X_s) P(β | X_s) N(X_s; X̄, Σ) / q(X_s) + log-constants
 //                with X_s drawn from q, the linearised posterior of the joint variables given F
 //                (ImportanceSampledLikelihood.h): the same integral with far fewer wasted samples under broad priors;
