@@ -24,6 +24,7 @@ STUDY = ["--max-steps", "100", "--methods", "known,ml,gpda,mm,mm-nh", "--odom-no
 # (label, ranks (0: no mpirun), threads per process, environment)
 LAYOUTS = [
     ("1 process × 2 threads", 0, 2, {}),
+    ("1 process × 2 threads, OMP_NUM_THREADS=1", 0, 2, {"OMP_NUM_THREADS": "1"}),
     ("mpirun -np 2 × 1 thread (work queue)", 2, 1, {}),
     ("mpirun -np 2 × 1 thread (static partition)", 2, 1, {"SEMSLAM_MPI_SCHEDULE": "static"}),
     ("mpirun -np 1 × 1 thread", 1, 1, {}),
@@ -101,6 +102,9 @@ def studies_mpi_section(semslam, data, scratch, shown):
                      f"{base / median[label]:.2f}× |")
     one_rank, two_ranks = median["mpirun -np 1 × 1 thread"], median["mpirun -np 2 × 1 thread (work queue)"]
     lines += ["", f"- 1 → 2 ranks (1 thread each): {one_rank / two_ranks:.2f}× faster.",
+              "- Debian's CHOLMOD runs its own OpenMP threads (docs/benchmarks.md): in one process with 2 worker "
+              "threads they oversubscribe the 2 cores; mpirun binds each rank to a core, so each rank's OpenMP "
+              "runs one thread. `OMP_NUM_THREADS=1` gives the single process the same footing.",
               "- Every folder above, and that of `mpirun -np 4` (oversubscribed), equals the first file for file, "
               "`timings.csv` aside.", "", "```sh", shown(convert).replace(log, "litw.jsonl")]
     for label, ranks, threads, extra in LAYOUTS + IDENTITY_ONLY:

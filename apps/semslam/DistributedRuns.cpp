@@ -68,7 +68,7 @@ bool staticSchedule() {
   const char* schedule = std::getenv("SEMSLAM_MPI_SCHEDULE");
   if (schedule == nullptr || std::strcmp(schedule, "queue") == 0) return false;
   if (std::strcmp(schedule, "static") == 0) return true;
-  throw std::invalid_argument(std::string("SEMSLAM_MPI_SCHEDULE: '") + schedule + "' is neither queue nor static");
+  throw std::runtime_error(std::string("SEMSLAM_MPI_SCHEDULE: '") + schedule + "' is neither queue nor static");
 }
 
 /// The n of SEMSLAM_TEST_RANK1_EXIT_AT_JOB (0: unset).
