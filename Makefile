@@ -20,7 +20,7 @@ SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
 DEB_PACKAGES := build-essential cmake pkg-config libeigen3-dev libsuitesparse-dev libgtest-dev libgmock-dev \
                 libcli11-dev nlohmann-json3-dev libboost-dev python3 python3-matplotlib python3-numpy \
-                python3-scipy
+                python3-scipy libopenmpi-dev openmpi-bin
 BENCH_PACKAGES := libbenchmark-dev libceres-dev
 
 # Installs each named package that dpkg does not report as installed; `apt-get update` first, since a fresh

@@ -19,6 +19,7 @@ import results_association
 import results_association_defaults
 import results_kitti_tracking
 import results_max_mixtures
+import results_studies_mpi
 
 POSE_GRAPHS = [
     ("manhattan (2D)", "vertigo/manhattan/originalDataset/g2o/manhattanOlson3500.g2o", "g2o", 146.07873),
@@ -245,7 +246,7 @@ def hybrid_section(semslam, data, scratch, python):
 
 
 SECTIONS = ["pose-graphs", "evo", "datasets", "hybrid", "max-mixtures", "robustness", "association",
-            "association-defaults", "kitti-tracking"]
+            "association-defaults", "kitti-tracking", "studies-mpi"]
 
 
 def section_lines(name, semslam, data, scratch):
@@ -270,6 +271,8 @@ def section_lines(name, semslam, data, scratch):
     elif name == "kitti-tracking":
         body = results_kitti_tracking.kitti_tracking_section(semslam, data, scratch,
                                                              lambda command: shown(command, data), sys.executable)
+    elif name == "studies-mpi":
+        body = results_studies_mpi.studies_mpi_section(semslam, data, scratch, lambda command: shown(command, data))
     else:
         sys.exit(f"make_results.py: unknown section {name} ({', '.join(SECTIONS)})")
     return [f"<!-- section:{name} -->"] + body + [f"<!-- end:{name} -->", ""]

@@ -42,14 +42,26 @@ def mean_ci(values):
     return m, m - half, m + half
 
 
-def read_runs(study):
-    with open(os.path.join(study, "runs.csv")) as f:
+def _read_numeric_csv(path):
+    with open(path) as f:
         rows = list(csv.DictReader(f))
     for r in rows:
         for key in r:
             if key not in ("model",):
                 r[key] = float(r[key])
     return rows
+
+
+def read_runs(study):
+    """runs.csv: the results of every run (the same bytes for any threads and ranks)."""
+    return _read_numeric_csv(os.path.join(study, "runs.csv"))
+
+
+def read_timings(study):
+    """timings.csv: every run's sampling_s and time_s, and the layout (rank, threads, ranks, wall_time_s), in the
+    order of runs.csv. A folder written before timings.csv existed kept the times in runs.csv."""
+    path = os.path.join(study, "timings.csv")
+    return _read_numeric_csv(path if os.path.exists(path) else os.path.join(study, "runs.csv"))
 
 
 METRICS = [("entropy", "H(w) over P(beta)"), ("det_cov", "det(Sigma) of position"),
@@ -98,11 +110,10 @@ def analyze(study, alpha=0.25):
     tv = [r["analytic_total_variation"] for r in rows if r["sampled_candidates"] > 0]
     result["sampled_vs_analytic_total_variation"] = mean_ci(tv)[0] if tv else float("nan")
     result["gate_lost_mass_max"] = max(r["gate_lost_mass"] for r in rows)
-    sampled = sum(r["sampled_candidates"] for r in rows)
-    sampling = sum(r["sampling_s"] for r in rows)
-    result["sampled_candidates"] = sampled
-    result["sampling_s"] = sampling
-    result["run_s_total"] = sum(r["time_s"] for r in rows)
+    timings = read_timings(study)
+    result["sampled_candidates"] = sum(r["sampled_candidates"] for r in rows)
+    result["sampling_s"] = sum(r["sampling_s"] for r in timings)
+    result["run_s_total"] = sum(r["time_s"] for r in timings)
     return result
 
 

@@ -3,9 +3,10 @@
 
 Usage: /usr/bin/python3 python/plot_robustness.py DIR [--metrics ate_rmse,rot_rmse,da_accuracy]
 
-Reads DIR/robustness.csv and writes DIR/robustness_<metric>.png for each metric: two panels, (a) the odometry
-noise sweep and (b) the misclassification sweep; per level one box per method (seeds are the samples), methods
-in a fixed colour. Also DIR/robustness.png: all metrics in one figure (rows: metrics, columns: sweeps).
+Reads DIR/robustness.csv (and DIR/timings.csv for the metric time_s: wall-clock times live there, so that
+robustness.csv is the same for any threads and MPI ranks) and writes DIR/robustness_<metric>.png for each metric:
+two panels, (a) the odometry noise sweep and (b) the misclassification sweep; per level one box per method (seeds
+are the samples), methods in a fixed colour. Also DIR/robustness.png: all metrics in one figure (rows: metrics, columns: sweeps).
 The y axes do not exaggerate differences: fractions (DA accuracy) span 0 to 1, errors and counts start at 0.
 """
 
@@ -47,6 +48,19 @@ def set_value_limits(ax, rows, metric):
 def read_rows(path):
     with open(path, newline="") as handle:
         return list(csv.DictReader(handle))
+
+
+def read_study_rows(folder):
+    """robustness.csv's rows, each with its run's time_s from timings.csv (the same run order) where present."""
+    rows = read_rows(os.path.join(folder, "robustness.csv"))
+    timings_path = os.path.join(folder, "timings.csv")
+    if os.path.exists(timings_path):
+        timings = read_rows(timings_path)
+        if len(timings) != len(rows):
+            sys.exit(f"plot_robustness.py: {timings_path} has {len(timings)} runs, robustness.csv {len(rows)}")
+        for row, timing in zip(rows, timings):
+            row["time_s"] = timing["time_s"]
+    return rows
 
 
 def values(rows, axis, level, method, metric):
@@ -99,7 +113,7 @@ def main():
     path = os.path.join(args.folder, "robustness.csv")
     if not os.path.exists(path):
         sys.exit(f"plot_robustness.py: {path} not found")
-    rows = read_rows(path)
+    rows = read_study_rows(args.folder)
     present = {row["method"] for row in rows}
     methods = [m for m in METHOD_ORDER if m in present] + sorted(present - set(METHOD_ORDER))
     metrics = [m for m in args.metrics.split(",") if m]

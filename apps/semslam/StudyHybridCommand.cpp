@@ -1,14 +1,16 @@
 // semslam study hybrid: paper A's statistical study (sec. V, Fig. 5) on aliased2d, with and without the classifier
-// model, over tracks and alphas (src/semslam/study/HybridStudy.h).
+// model, over tracks and alphas (src/semslam/study/HybridStudy.h). Under mpirun the runs are spread over the ranks
+// (DistributedRuns.h); rank 0 writes the folder, the same bytes for any layout but timings.csv (docs/studies.md).
 
-#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <string>
 
 #include "Commands.h"
+#include "DistributedRuns.h"
 #include "MethodOptions.h"
 #include "semslam/study/HybridStudy.h"
+#include "semslam/study/StudyRowBytes.h"
 #include "semslam/core/InputError.h"
 #include "semslam/io/ScenarioFile.h"
 #include "semslam/core/ProgressBar.h"
@@ -29,16 +31,33 @@ void runStudy(StudyHybridArguments arguments) {
   for (double a : options.alphas) {
     if (!(a >= 0.0 && a <= 1.0)) throw InputError("--alpha: every alpha must be in [0, 1]");
   }
-  const auto start = std::chrono::steady_clock::now();
-  ProgressBar progress("study hybrid", options.tracks * static_cast<int>(options.alphas.size()) * 2,
-                       arguments.quiet);
-  const std::vector<HybridStudyRow> rows =
-      runHybridStudy(options, [&progress](int done, int) { progress.update(done); });
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  writeHybridStudy(arguments.out, rows);
-  std::printf("hybrid study: %zu runs (%d tracks x %zu alphas x 2 models, %d steps) in %.1f s on %d threads\n",
-              rows.size(), options.tracks, options.alphas.size(), options.steps, seconds, options.threads);
-  std::printf("wrote %s/{runs.csv,summary.csv,nees.csv}\n", arguments.out.c_str());
+  std::vector<HybridStudyRun> runs;
+  try {
+    runs = hybridStudyRuns(options);
+  } catch (const std::invalid_argument& error) {
+    throw InputError(error.what());
+  }
+  // Only the rank that writes draws progress (a helper rank's bar is never drawn).
+  ProgressBar progress("study hybrid", static_cast<int>(runs.size()), arguments.quiet || !isGatheringRank());
+  const DistributedResults distributed = runDistributed(
+      runs.size(), options.threads,
+      [&](std::size_t i) { return encodeHybridStudyRow(runHybridStudyRun(options, runs[i])); },
+      [&progress](int done, int) { progress.update(done); });
+  if (!distributed.gathered) return;
+  std::vector<HybridStudyRow> rows;
+  for (const std::string& bytes : distributed.results) rows.push_back(decodeHybridStudyRow(bytes));
+  writeHybridStudy(arguments.out, rows, distributed.layout);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (!rows[i].error.empty() && !arguments.quiet) {
+      std::fprintf(stderr, "semslam: warning: run %zu (alpha %g, track %d, %s) failed: %s\n", i, rows[i].alpha,
+                   rows[i].track, rows[i].model.c_str(), rows[i].error.c_str());
+    }
+  }
+  std::printf("hybrid study: %zu runs (%d tracks x %zu alphas x 2 models, %d steps, %d failed) in %.1f s on %d "
+              "rank(s) x %d threads\n",
+              rows.size(), options.tracks, options.alphas.size(), options.steps, failedHybridRuns(rows),
+              distributed.layout.wallSeconds, distributed.layout.ranks, options.threads);
+  std::printf("wrote %s/{runs.csv,summary.csv,nees.csv,timings.csv}\n", arguments.out.c_str());
 }
 
 }  // namespace

@@ -4,9 +4,10 @@
 //       --misclassification 0,0.1,0.2,0.3,0.5 --seeds 10 --out DIR
 //
 // Two one-axis sweeps (noise scale at misclassification 0.1; misclassification at noise scale 1), every cell's
-// perturbed log shared by all methods, cells spread over --threads worker threads. DIR gets robustness.csv (one row
-// per axis, level, seed and method), robustness_summary.csv (mean and 95% t-interval per axis, level and method)
-// and study.json (the settings and the wall time), written by study/RobustnessStudyFolder.h; paper B's options are
+// perturbed log shared by all methods, cells spread over --threads worker threads (and over the ranks under mpirun:
+// DistributedRuns.h, docs/studies.md). DIR gets robustness.csv (one row per axis, level, seed and method),
+// robustness_summary.csv (mean and 95% t-interval per axis, level and method), study.json (the settings) and
+// timings.csv (run times, layout, wall time), written by study/RobustnessStudyFolder.h; paper B's options are
 // the shared block of MethodOptions.h (--gate, --null-weight, ..., --no-warm-start); python/plot_robustness.py DIR
 // draws the box plots.
 
@@ -18,6 +19,7 @@
 #include <vector>
 
 #include "Commands.h"
+#include "DistributedRuns.h"
 #include "MethodOptions.h"
 #include "semslam/core/InputError.h"
 #include "semslam/core/ProgressBar.h"
@@ -25,6 +27,7 @@
 #include "semslam/solve/SmootherFactory.h"
 #include "semslam/study/RobustnessStudy.h"
 #include "semslam/study/RobustnessStudyFolder.h"
+#include "semslam/study/StudyRowBytes.h"
 
 namespace semslam::cli {
 
@@ -109,30 +112,40 @@ void runRobustness(const RobustnessArguments& arguments) {
   }
 
   const MeasurementLog log = readMeasurementLog(arguments.log);
-  const int runs =
-      static_cast<int>((options.noiseScales.size() + options.misclassificationRates.size()) * options.methods.size()) *
-      options.seeds;
-  ProgressBar bar("study robustness", runs, arguments.quiet);
-  options.progress = [&bar](int done, int) { bar.update(done); };
-  RobustnessStudy study;
+  const std::vector<RobustnessCell> cells = robustnessCells(options);
+  const int methods = static_cast<int>(options.methods.size());
+  // Progress counts runs; a cell (the unit spread over threads and ranks) is `methods` runs.
+  ProgressBar bar("study robustness", static_cast<int>(cells.size()) * methods,
+                  arguments.quiet || !isGatheringRank());
+  DistributedResults distributed;
   try {
-    study = runRobustnessStudy(log, options);
+    distributed = runDistributed(
+        cells.size(), options.threads,
+        [&](std::size_t i) { return encodeRobustnessRows(runRobustnessCell(log, options, cells[i])); },
+        [&bar, methods](int done, int) { bar.update(done * methods); });
   } catch (const std::invalid_argument& error) {
     throw InputError(arguments.log, 0, error.what());
+  }
+  if (!distributed.gathered) return;
+  RobustnessStudy study;
+  study.layout = distributed.layout;
+  for (const std::string& bytes : distributed.results) {
+    for (RobustnessRow& row : decodeRobustnessRows(bytes)) study.rows.push_back(std::move(row));
   }
 
   writeRobustnessStudyFolder(arguments.out, study, options, {arguments.log, arguments.methods, arguments.smoother});
   const int failed = failedRobustnessRuns(study.rows);
   int warned = 0;
-  for (const RobustnessRow& row : study.rows) {
+  for (std::size_t i = 0; i < study.rows.size(); ++i) {
+    const RobustnessRow& row = study.rows[i];
     if (row.error.empty() || arguments.quiet || ++warned > 5) continue;
-    std::fprintf(stderr, "semslam: warning: %s %g seed %d %s failed: %s\n", robustnessAxisName(row.axis).c_str(),
-                 row.level, row.seed, row.method.c_str(), row.error.c_str());
+    std::fprintf(stderr, "semslam: warning: run %zu (%s %g seed %d %s) failed: %s\n", i,
+                 robustnessAxisName(row.axis).c_str(), row.level, row.seed, row.method.c_str(), row.error.c_str());
   }
-  std::printf("study robustness: %zu runs (%d failed) of %s on %s in %.1f s; wrote %s/robustness.csv, "
-              "robustness_summary.csv, study.json\n",
-              study.rows.size(), failed, arguments.methods.c_str(), arguments.log.c_str(), study.wallSeconds,
-              arguments.out.c_str());
+  std::printf("study robustness: %zu runs (%d failed) of %s on %s in %.1f s on %d rank(s) x %d threads; wrote "
+              "%s/robustness.csv, robustness_summary.csv, study.json, timings.csv\n",
+              study.rows.size(), failed, arguments.methods.c_str(), arguments.log.c_str(), study.layout.wallSeconds,
+              study.layout.ranks, options.threads, arguments.out.c_str());
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The install, as a user gets it: installs the already built semslam (nothing is rebuilt) into a temporary prefix,
 # checks that everything landed under that prefix and nowhere else (CLI, headers, CMake package, semslam.pc,
-# plotting scripts, licence and citation), then builds and runs the same tiny consumer
+# plotting scripts, licence and citation) and that the package names no MPI, then builds and runs the same tiny consumer
 # (tests/packaging/consumer/main.cpp) twice: with CMake's find_package(semslam) and with
 # `pkg-config --cflags --libs semslam`.
 # Usage: install_and_consume.sh BUILD_DIR SOURCE_DIR VERSION
@@ -26,6 +26,9 @@ for file in bin/semslam include/semslam/solve/Optimizer.h include/semslam/core/V
 done
 [ -x "$prefix/share/semslam/python/plot_run.py" ] || fail "the plotting scripts are not executable"
 [ "$("$prefix/bin/semslam" --version)" = "semslam $version" ] || fail "the installed CLI does not print $version"
+# MPI is the command-line tool's alone (docs/studies.md): the package a consumer builds against never names it.
+! grep -lE "MPI::|libmpi|-lmpi" "$prefix"/lib/cmake/semslam/*.cmake "$prefix/lib/pkgconfig/semslam.pc" \
+  || fail "the installed package names MPI"
 
 # 1. CMake: find_package(semslam) finds semslam and its dependencies.
 cmake -S "$source_dir/tests/packaging/consumer" -B "$work/cmake-consumer" -DCMAKE_BUILD_TYPE=Release \

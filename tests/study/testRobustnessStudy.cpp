@@ -1,6 +1,6 @@
 // RobustnessStudy: a tiny study on a simulated log (2 levels per axis, 2 seeds): the rows are complete and in
 // order, seeds are paired (the overlapping cell of both sweeps, and a method's result does not depend on which
-// other methods run), the CSV is identical with 1 and 2 threads, stuck is defined for mm / mm-nh only; the t
+// other methods run), the CSVs are identical with 1 and 2 threads (times only in timings.csv), stuck is defined for mm / mm-nh only; the t
 // interval; and the CLI: a small run writes its files (study.json with the shared method options), bad input
 // exits 2.
 
@@ -31,23 +31,6 @@ RobustnessStudyOptions tinyOptions() {
   options.seeds = 2;
   options.threads = 2;
   return options;
-}
-
-/// The CSV without its time_s column (a wall-clock time).
-std::string withoutTimes(const std::string& csv) {
-  std::istringstream in(csv);
-  std::string line, out;
-  while (std::getline(in, line)) {
-    std::vector<std::string> fields;
-    std::stringstream cells(line);
-    std::string field;
-    while (std::getline(cells, field, ',')) fields.push_back(field);
-    if (line.back() == ',') fields.push_back("");
-    fields.erase(fields.begin() + 10);  // time_s
-    for (std::size_t i = 0; i < fields.size(); ++i) out += (i ? "," : "") + fields[i];
-    out += "\n";
-  }
-  return out;
 }
 
 // One test for the whole tiny study (ctest runs every test in its own process: a fixture would redo the study).
@@ -84,8 +67,12 @@ TEST(RobustnessStudy, TinyStudy) {
   EXPECT_EQ(rows[20].level, 0.0);
   EXPECT_EQ(rows[30].level, 0.1);
 
-  // The same CSV with one and two threads (but for the wall-clock times).
-  EXPECT_EQ(withoutTimes(robustnessCsv(oneThread.rows)), withoutTimes(robustnessCsv(twoThreads.rows)));
+  // The same CSV with one and two threads (the wall-clock times are in timings.csv only).
+  EXPECT_EQ(robustnessCsv(oneThread.rows), robustnessCsv(twoThreads.rows));
+  EXPECT_EQ(robustnessSummaryCsv(oneThread.rows), robustnessSummaryCsv(twoThreads.rows));
+  const std::string timings = robustnessTimingsCsv(rows, twoThreads.layout, 5);
+  EXPECT_EQ(timings.rfind("axis,level,seed,method,rank,time_s,threads,ranks,wall_time_s\n", 0), 0u);
+  EXPECT_EQ(std::count(timings.begin(), timings.end(), '\n'), 1 + 40);
 
   // Summary: one row per (axis, level, method).
   const std::string summary = robustnessSummaryCsv(rows);
@@ -157,13 +144,16 @@ TEST(StudyCommand, SmallRunWritesItsFilesAndBadInputExitsTwo) {
   ASSERT_EQ(ok.exitCode, 0) << ok.output;
   const std::string csv = test::fileBytes(out + "/robustness.csv");
   EXPECT_EQ(csv.rfind("axis,level,seed,method,ate_rmse,rot_rmse,da_accuracy,da_accuracy_real,landmarks_estimated,"
-                      "landmarks_true,time_s,stuck\n",
+                      "landmarks_true,stuck\n",
                       0),
             0u);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 3 * 2);
   EXPECT_FALSE(test::fileBytes(out + "/robustness_summary.csv").empty());
+  const std::string timings = test::fileBytes(out + "/timings.csv");
+  EXPECT_EQ(timings.rfind("axis,level,seed,method,rank,time_s,threads,ranks,wall_time_s\n", 0), 0u) << timings;
+  EXPECT_EQ(std::count(timings.begin(), timings.end(), '\n'), 1 + 3 * 2);
   const nlohmann::json settings = nlohmann::json::parse(test::fileBytes(out + "/study.json"));
-  EXPECT_EQ(settings["schema"], "semslam.study.robustness/1");
+  EXPECT_EQ(settings["schema"], "semslam.study.robustness/2");
   EXPECT_EQ(settings["version"], std::string(semslam::version()));
   EXPECT_EQ(settings["methods"], "known,mm");
   EXPECT_EQ(settings["runs"], 6);
@@ -171,6 +161,7 @@ TEST(StudyCommand, SmallRunWritesItsFilesAndBadInputExitsTwo) {
   for (const char* key : {"gate", "null_sigma_scale", "em_window", "em_iterations", "birth", "unassigned_rate", "warm_start", "smoother"}) {
     EXPECT_TRUE(settings.contains(key)) << key;
   }
+  for (const char* key : {"threads", "wall_time_s"}) EXPECT_FALSE(settings.contains(key)) << key;  // timings.csv
 
   for (const std::string bad : {"--methods known,magic", "--odom-noise-scale ,", "--odom-noise-scale=-1",
                                 "--misclassification 1", "--misclassification 0.1,x", "--seeds 0"}) {

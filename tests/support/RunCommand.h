@@ -14,9 +14,9 @@ struct CommandResult {
   std::string output;  // stdout and stderr together
 };
 
-/// Runs `build/bin/semslam ARGUMENTS` through the shell (arguments are passed verbatim: quote paths yourself).
-inline CommandResult runSemslam(const std::string& arguments) {
-  const std::string command = std::string("\"") + SEMSLAM_CLI + "\" " + arguments + " 2>&1";
+/// Runs a shell command line, its stderr joined to its stdout.
+inline CommandResult runShell(const std::string& commandLine) {
+  const std::string command = commandLine + " 2>&1";
   CommandResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return result;
@@ -25,6 +25,11 @@ inline CommandResult runSemslam(const std::string& arguments) {
   const int status = pclose(pipe);
   result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
+}
+
+/// Runs `build/bin/semslam ARGUMENTS` through the shell (arguments are passed verbatim: quote paths yourself).
+inline CommandResult runSemslam(const std::string& arguments) {
+  return runShell(std::string("\"") + SEMSLAM_CLI + "\" " + arguments);
 }
 
 }  // namespace semslam::test

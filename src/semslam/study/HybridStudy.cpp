@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -76,48 +77,77 @@ HybridStudyRow runOne(const HybridStudyOptions& options, std::size_t alphaIndex,
 
 }  // namespace
 
-std::vector<HybridStudyRow> runHybridStudy(const HybridStudyOptions& options,
-                                           const std::function<void(int, int)>& progress) {
+std::vector<HybridStudyRun> hybridStudyRuns(const HybridStudyOptions& options) {
   if (options.tracks < 1 || options.steps < 1 || options.alphas.empty()) {
     throw std::invalid_argument("hybrid study: needs at least one track, one step and one alpha");
   }
   validateAliased2dScenario(options.scenario);
   options.hybrid.validate();
-  struct Job {
-    std::size_t alpha;
-    int track;
-    bool classifier;
-  };
-  std::vector<Job> jobs;
+  std::vector<HybridStudyRun> runs;
   for (std::size_t a = 0; a < options.alphas.size(); ++a) {
     for (int t = 0; t < options.tracks; ++t) {
-      jobs.push_back({a, t, true});
-      jobs.push_back({a, t, false});
+      runs.push_back({a, t, true});
+      runs.push_back({a, t, false});
     }
   }
-  std::vector<HybridStudyRow> rows(jobs.size());
+  return runs;
+}
+
+HybridStudyRow runHybridStudyRun(const HybridStudyOptions& options, const HybridStudyRun& run) {
+  try {
+    return runOne(options, run.alphaIndex, run.track, run.classifier);
+  } catch (const std::exception& error) {
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    HybridStudyRow row;
+    row.alpha = options.alphas[run.alphaIndex];
+    row.model = run.classifier ? "classifier" : "geometric";
+    row.track = run.track;
+    row.entropy = row.detCov = row.errWmax = row.errWavg = row.ess = row.finalNees = nan;
+    row.assocWeightAtStep = row.gateLostMass = row.analyticTotalVariation = row.samplingSeconds = row.seconds = nan;
+    row.error = error.what();
+    return row;
+  }
+}
+
+std::vector<HybridStudyRow> runHybridStudy(const HybridStudyOptions& options,
+                                           const std::function<void(int, int)>& progress) {
+  const std::vector<HybridStudyRun> runs = hybridStudyRuns(options);
+  std::vector<HybridStudyRow> rows(runs.size());
   runParallelJobs(
-      jobs.size(), options.threads,
-      [&](std::size_t i) { rows[i] = runOne(options, jobs[i].alpha, jobs[i].track, jobs[i].classifier); },
+      runs.size(), options.threads, [&](std::size_t i) { rows[i] = runHybridStudyRun(options, runs[i]); },
       progress);
   return rows;
 }
 
-void writeHybridStudy(const std::string& directory, const std::vector<HybridStudyRow>& rows) {
+int failedHybridRuns(const std::vector<HybridStudyRow>& rows) {
+  return static_cast<int>(
+      std::count_if(rows.begin(), rows.end(), [](const HybridStudyRow& row) { return !row.error.empty(); }));
+}
+
+void writeHybridStudy(const std::string& directory, const std::vector<HybridStudyRow>& rows,
+                      const StudyLayout& layout) {
   std::filesystem::create_directories(directory);
   const std::filesystem::path dir(directory);
   writeFileAtomically((dir / "runs.csv").string(), [&](std::ostream& out) {
     out << "alpha,model,track,entropy,det_cov,err_wmax,err_wavg,ess,components,final_nees,assoc_weight_at_step,"
            "disambiguated_at_step,heaviest_history_correct,gate_lost_mass,analytic_total_variation,"
-           "sampled_candidates,sampling_s,time_s\n";
+           "sampled_candidates\n";
     for (const HybridStudyRow& r : rows) {
       out << seventeenDigitNumber(r.alpha) << ',' << r.model << ',' << r.track << ',' << seventeenDigitNumber(r.entropy) << ','
           << seventeenDigitNumber(r.detCov) << ',' << seventeenDigitNumber(r.errWmax) << ',' << seventeenDigitNumber(r.errWavg) << ','
           << seventeenDigitNumber(r.ess) << ',' << r.components << ',' << seventeenDigitNumber(r.finalNees) << ','
           << seventeenDigitNumber(r.assocWeightAtStep) << ',' << (r.disambiguatedAtStep ? 1 : 0) << ','
           << (r.heaviestHistoryCorrect ? 1 : 0) << ',' << seventeenDigitNumber(r.gateLostMass) << ','
-          << seventeenDigitNumber(r.analyticTotalVariation) << ',' << r.sampledCandidates << ','
-          << seventeenDigitNumber(r.samplingSeconds) << ',' << seventeenDigitNumber(r.seconds) << '\n';
+          << seventeenDigitNumber(r.analyticTotalVariation) << ',' << r.sampledCandidates << '\n';
+    }
+  });
+  writeFileAtomically((dir / "timings.csv").string(), [&](std::ostream& out) {
+    out << "alpha,model,track,rank,sampling_s,time_s,threads,ranks,wall_time_s\n";
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const HybridStudyRow& r = rows[i];
+      out << seventeenDigitNumber(r.alpha) << ',' << r.model << ',' << r.track << ',' << layout.rankOf(i) << ','
+          << seventeenDigitNumber(r.samplingSeconds) << ',' << seventeenDigitNumber(r.seconds) << ','
+          << layout.threads << ',' << layout.ranks << ',' << seventeenDigitNumber(layout.wallSeconds) << '\n';
     }
   });
   // Means over tracks, in the order of first appearance of (alpha, model).

@@ -11,7 +11,9 @@
 //
 // Parallelism: runs are distributed over `threads` worker threads by an atomic counter; each run's Monte Carlo
 // seed is derived from (seed, alpha index, track, model) only, and results are stored by run index, so the
-// output does not depend on the thread count or the scheduling.
+// output does not depend on the thread count or the scheduling. The runs are listed (hybridStudyRuns) and run one
+// by one (runHybridStudyRun) for a caller that spreads them further, over processes (apps/semslam/DistributedRuns.h).
+// A run that throws is a row with NaN metrics and its error; the other runs go on.
 
 #include <atomic>
 #include <cstdint>
@@ -22,6 +24,7 @@
 #include "semslam/eval/Nees.h"
 #include "semslam/hybrid/HybridOptions.h"
 #include "semslam/sim/Aliased2dScenario.h"
+#include "semslam/study/StudyLayout.h"
 
 namespace semslam {
 
@@ -49,16 +52,39 @@ struct HybridStudyRow {
   double gateLostMass = 0.0;             ///< the largest per-step lost mass of the gate
   double analyticTotalVariation = 0.0;   ///< mean over steps (sampled runs)
   long long sampledCandidates = 0;
-  double samplingSeconds = 0.0;
-  double seconds = 0.0;
+  double samplingSeconds = 0.0;        ///< wall-clock: timings.csv only
+  double seconds = 0.0;                ///< wall-clock: timings.csv only
+  std::string error;                   ///< non-empty: the run threw (metrics NaN); not in the CSV
 };
+
+/// One run of the study: the alpha (its index in options.alphas), the track and the model.
+struct HybridStudyRun {
+  std::size_t alphaIndex = 0;
+  int track = 0;
+  bool classifier = true;
+};
+
+/// The study's runs in row order (alphas, tracks inside, classifier then geometric); validates the options
+/// (throws std::invalid_argument).
+std::vector<HybridStudyRun> hybridStudyRuns(const HybridStudyOptions& options);
+
+/// One run; its seed depends on (options.seed, alpha index, track, model) only. An exception inside the run is
+/// caught into the row's error.
+HybridStudyRow runHybridStudyRun(const HybridStudyOptions& options, const HybridStudyRun& run);
 
 /// Runs the study; `progress(done, total)` is called (from the workers, serialised) after every run.
 std::vector<HybridStudyRow> runHybridStudy(const HybridStudyOptions& options,
                                            const std::function<void(int, int)>& progress = {});
 
-/// runs.csv: every row. summary.csv: alpha,model,entropy,det_cov,err_wmax,err_wavg, the means over tracks.
-/// nees.csv: alpha,model,nees_mean,count,lower,upper (the pooled final-pose NEES and its 95 % band).
-void writeHybridStudy(const std::string& directory, const std::vector<HybridStudyRow>& rows);
+/// Runs whose row has an error.
+int failedHybridRuns(const std::vector<HybridStudyRow>& rows);
+
+/// runs.csv: every row but its times. summary.csv: alpha,model,entropy,det_cov,err_wmax,err_wavg, the means over
+/// tracks. nees.csv: alpha,model,nees_mean,count,lower,upper (the pooled final-pose NEES and its 95 % band).
+/// timings.csv (StudyLayout.h): alpha,model,track,rank,sampling_s,time_s,threads,ranks,wall_time_s, one row per
+/// run (rank: the process that ran it; threads, ranks and the study's wall time repeated on every row). A job of
+/// `layout` is a run. Every file is written atomically.
+void writeHybridStudy(const std::string& directory, const std::vector<HybridStudyRow>& rows,
+                      const StudyLayout& layout = {});
 
 }  // namespace semslam

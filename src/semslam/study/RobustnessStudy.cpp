@@ -95,87 +95,104 @@ std::vector<RobustnessCell> robustnessCells(const RobustnessStudyOptions& option
   return cells;
 }
 
+std::vector<RobustnessRow> runRobustnessCell(const MeasurementLog& log, const RobustnessStudyOptions& options,
+                                             const RobustnessCell& cell, const std::function<void()>& runFinished) {
+  const MeasurementLog perturbed = perturbLog(log, cell.perturbation, cell.perturbationSeed);
+  std::vector<RobustnessRow> rows;
+  for (AssociationStrategy strategy : options.methods) {
+    RobustnessRow row;
+    row.axis = cell.axis;
+    row.level = cell.level;
+    row.seed = cell.seed;
+    row.method = strategyName(strategy);
+    MethodOptions runOptions;
+    runOptions.method = methodFor(strategy);
+    runOptions.slam = options.slam;
+    runOptions.poseCovariances = false;
+    runOptions.runFolder = false;
+    try {
+      const MethodRun run = runMethod(perturbed, runOptions);
+      const RunMetrics& m = run.evaluation.metrics;
+      row.ateRmse = m.ateRmse;
+      row.rotRmse = m.rotRmse;
+      row.daAccuracy = m.daAccuracy;
+      row.daAccuracyReal = m.daAccuracyReal;
+      row.landmarksEstimated = m.landmarksEstimated;
+      row.landmarksTrue = m.landmarksTrue;
+      row.timeSeconds = run.result.timeSeconds;
+    } catch (const std::exception& error) {
+      row.ateRmse = row.rotRmse = row.daAccuracy = row.daAccuracyReal = row.timeSeconds = kNaN;
+      row.error = error.what();
+    }
+    rows.push_back(std::move(row));
+    if (runFinished) runFinished();
+  }
+  // Stuck: mm / mm-nh against known on this very cell.
+  const RobustnessRow* known = nullptr;
+  for (const RobustnessRow& row : rows) {
+    if (row.method == strategyName(AssociationStrategy::Known)) known = &row;
+  }
+  for (RobustnessRow& row : rows) {
+    if (!isMaxMixture(row.method) || known == nullptr || !std::isfinite(known->ateRmse) ||
+        !std::isfinite(row.ateRmse)) {
+      continue;
+    }
+    row.stuck = row.ateRmse > options.stuckRatio * known->ateRmse &&
+                row.ateRmse > known->ateRmse + options.stuckMargin;
+  }
+  return rows;
+}
+
 RobustnessStudy runRobustnessStudy(const MeasurementLog& log, const RobustnessStudyOptions& options) {
   validateRobustnessOptions(options);
   const auto start = std::chrono::steady_clock::now();
   const std::vector<RobustnessCell> cells = robustnessCells(options);
-  const int methods = static_cast<int>(options.methods.size());
-  const int totalRuns = static_cast<int>(cells.size()) * methods;
+  const int totalRuns = static_cast<int>(cells.size() * options.methods.size());
   std::vector<std::vector<RobustnessRow>> results(cells.size());
   std::mutex progressMutex;  // progress counts runs, several per cell (job)
   int finished = 0;
-
-  auto runCell = [&](std::size_t index) {
-    const RobustnessCell& cell = cells[index];
-    const MeasurementLog perturbed = perturbLog(log, cell.perturbation, cell.perturbationSeed);
-    std::vector<RobustnessRow>& rows = results[index];
-    for (AssociationStrategy strategy : options.methods) {
-      RobustnessRow row;
-      row.axis = cell.axis;
-      row.level = cell.level;
-      row.seed = cell.seed;
-      row.method = strategyName(strategy);
-      MethodOptions runOptions;
-      runOptions.method = methodFor(strategy);
-      runOptions.slam = options.slam;
-      runOptions.poseCovariances = false;
-      runOptions.runFolder = false;
-      try {
-        const MethodRun run = runMethod(perturbed, runOptions);
-        const RunMetrics& m = run.evaluation.metrics;
-        row.ateRmse = m.ateRmse;
-        row.rotRmse = m.rotRmse;
-        row.daAccuracy = m.daAccuracy;
-        row.daAccuracyReal = m.daAccuracyReal;
-        row.landmarksEstimated = m.landmarksEstimated;
-        row.landmarksTrue = m.landmarksTrue;
-        row.timeSeconds = run.result.timeSeconds;
-      } catch (const std::exception& error) {
-        row.ateRmse = row.rotRmse = row.daAccuracy = row.daAccuracyReal = row.timeSeconds = kNaN;
-        row.error = error.what();
-      }
-      rows.push_back(std::move(row));
-      if (options.progress) {
-        std::lock_guard<std::mutex> lock(progressMutex);
-        options.progress(++finished, totalRuns);
-      }
-    }
-    // Stuck: mm / mm-nh against known on this very cell.
-    const RobustnessRow* known = nullptr;
-    for (const RobustnessRow& row : rows) {
-      if (row.method == strategyName(AssociationStrategy::Known)) known = &row;
-    }
-    for (RobustnessRow& row : rows) {
-      if (!isMaxMixture(row.method) || known == nullptr || !std::isfinite(known->ateRmse) ||
-          !std::isfinite(row.ateRmse)) {
-        continue;
-      }
-      row.stuck = row.ateRmse > options.stuckRatio * known->ateRmse &&
-                  row.ateRmse > known->ateRmse + options.stuckMargin;
-    }
+  const auto runFinished = [&] {
+    if (!options.progress) return;
+    std::lock_guard<std::mutex> lock(progressMutex);
+    options.progress(++finished, totalRuns);
   };
 
   // A log that cannot be perturbed fails the same way in every cell: the first such error stops the study.
-  runParallelJobs(cells.size(), options.threads, runCell);
+  runParallelJobs(cells.size(), options.threads,
+                  [&](std::size_t index) { results[index] = runRobustnessCell(log, options, cells[index], runFinished); });
 
   RobustnessStudy study;
   for (std::vector<RobustnessRow>& rows : results) {
     for (RobustnessRow& row : rows) study.rows.push_back(std::move(row));
   }
-  study.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  study.layout.threads = options.threads;
+  study.layout.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return study;
 }
 
 std::string robustnessCsv(const std::vector<RobustnessRow>& rows) {
   std::ostringstream out;
   out << "axis,level,seed,method,ate_rmse,rot_rmse,da_accuracy,da_accuracy_real,landmarks_estimated,landmarks_true,"
-         "time_s,stuck\n";
+         "stuck\n";
   for (const RobustnessRow& row : rows) {
     out << robustnessAxisName(row.axis) << "," << number(row.level) << "," << row.seed << "," << row.method << ","
         << number(row.ateRmse) << "," << number(row.rotRmse) << "," << number(row.daAccuracy) << ","
         << number(row.daAccuracyReal) << ","
-        << count(row.landmarksEstimated) << "," << count(row.landmarksTrue) << "," << number(row.timeSeconds) << ","
+        << count(row.landmarksEstimated) << "," << count(row.landmarksTrue) << ","
         << (row.stuck ? (*row.stuck ? "1" : "0") : "") << "\n";
+  }
+  return out.str();
+}
+
+std::string robustnessTimingsCsv(const std::vector<RobustnessRow>& rows, const StudyLayout& layout,
+                                 std::size_t methodsPerCell) {
+  std::ostringstream out;
+  out << "axis,level,seed,method,rank,time_s,threads,ranks,wall_time_s\n";
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const RobustnessRow& row = rows[i];
+    out << robustnessAxisName(row.axis) << "," << number(row.level) << "," << row.seed << "," << row.method << ","
+        << layout.rankOf(i / std::max<std::size_t>(methodsPerCell, 1)) << "," << number(row.timeSeconds) << ","
+        << layout.threads << "," << layout.ranks << "," << number(layout.wallSeconds) << "\n";
   }
   return out.str();
 }
@@ -227,7 +244,7 @@ MeanInterval meanInterval(const std::vector<double>& values) {
 
 std::string robustnessSummaryCsv(const std::vector<RobustnessRow>& rows) {
   struct Group {
-    std::vector<double> ate, rot, da, daReal, landmarks, time;
+    std::vector<double> ate, rot, da, daReal, landmarks;
     int stuck = 0, stuckDefined = 0, failed = 0;
   };
   using Key = std::tuple<int, double, std::string>;
@@ -243,7 +260,6 @@ std::string robustnessSummaryCsv(const std::vector<RobustnessRow>& rows) {
     g.da.push_back(row.daAccuracy);
     g.daReal.push_back(row.daAccuracyReal);
     g.landmarks.push_back(row.landmarksEstimated ? static_cast<double>(*row.landmarksEstimated) : kNaN);
-    g.time.push_back(row.timeSeconds);
     if (row.stuck) {
       ++g.stuckDefined;
       g.stuck += *row.stuck ? 1 : 0;
@@ -252,7 +268,7 @@ std::string robustnessSummaryCsv(const std::vector<RobustnessRow>& rows) {
   }
   std::ostringstream out;
   out << "axis,level,method,n,ate_mean,ate_ci_low,ate_ci_high,rot_mean,rot_ci_low,rot_ci_high,da_mean,da_ci_low,"
-         "da_ci_high,da_real_mean,da_real_ci_low,da_real_ci_high,landmarks_mean,time_mean,stuck_fraction,failed\n";
+         "da_ci_high,da_real_mean,da_real_ci_low,da_real_ci_high,landmarks_mean,stuck_fraction,failed\n";
   for (const Key& key : order) {
     const Group& g = groups.at(key);
     const MeanInterval ate = meanInterval(g.ate), rot = meanInterval(g.rot), da = meanInterval(g.da),
@@ -262,7 +278,6 @@ std::string robustnessSummaryCsv(const std::vector<RobustnessRow>& rows) {
         << number(ate.high) << "," << number(rot.mean) << "," << number(rot.low) << "," << number(rot.high) << ","
         << number(da.mean) << "," << number(da.low) << "," << number(da.high) << "," << number(daReal.mean) << ","
         << number(daReal.low) << "," << number(daReal.high) << "," << number(meanInterval(g.landmarks).mean) << ","
-        << number(meanInterval(g.time).mean) << ","
         << (g.stuckDefined > 0 ? number(static_cast<double>(g.stuck) / g.stuckDefined) : "") << "," << g.failed
         << "\n";
   }

@@ -7,7 +7,9 @@
 // each level run with `seeds` seeds. A cell is (axis, level, seed): its perturbed log (LogPerturbation.h) is built
 // once, from perturbation seed baseSeed + seed, and every method runs on that same log (paired seeds). Cells run in
 // parallel on `threads` worker threads (a shared queue); results are stored by cell index, so the rows do not
-// depend on the thread count (except time_s, a wall-clock time). docs/robustness-study.md describes the study.
+// depend on the thread count (except timeSeconds, a wall-clock time that only timings.csv holds). A caller that
+// spreads the cells further, over processes (apps/semslam/DistributedRuns.h), runs them one by one
+// (runRobustnessCell). docs/robustness-study.md describes the study.
 //
 // Stuck (paper B, sec. V-A: max-mixtures "stuck" in a local optimum between hypotheses): a mm or mm-nh run is stuck
 // when its ATE RMSE exceeds both stuckRatio (3) times and stuckMargin (0.1 m) more than the ATE RMSE of `known` on
@@ -22,6 +24,7 @@
 
 #include "semslam/slam/SemanticSlam.h"
 #include "semslam/study/LogPerturbation.h"
+#include "semslam/study/StudyLayout.h"
 
 namespace semslam {
 
@@ -67,7 +70,7 @@ struct RobustnessRow {
   double ateRmse = 0.0, rotRmse = 0.0, daAccuracy = 0.0;  ///< NaN where not applicable or the run failed
   double daAccuracyReal = 0.0;     ///< over detections of true landmarks only (docs/metrics.md); NaN likewise
   std::optional<long long> landmarksEstimated, landmarksTrue;
-  double timeSeconds = 0.0;
+  double timeSeconds = 0.0;        ///< wall-clock: timings.csv only
   std::optional<bool> stuck;
   std::string error;  ///< non-empty: the run threw (metrics NaN); not in the CSV
 };
@@ -75,7 +78,7 @@ struct RobustnessRow {
 struct RobustnessStudy {
   std::vector<RobustnessRow> rows;  ///< cell order (odom_noise levels, then misclassification levels; seeds inside),
                                     ///< methods in the options' order within a cell
-  double wallSeconds = 0.0;
+  StudyLayout layout;               ///< a job is a cell; wall time, threads, ranks (timings.csv)
 };
 
 /// Validates the options (throws std::invalid_argument naming the problem: no methods, an empty level list, a
@@ -85,11 +88,22 @@ void validateRobustnessOptions(const RobustnessStudyOptions& options);
 /// The cells, in row order.
 std::vector<RobustnessCell> robustnessCells(const RobustnessStudyOptions& options);
 
+/// One cell: its perturbed log, every method on it (a method that throws leaves a row with its error), the stuck
+/// rule against known; `runFinished()` after each method's run. Throws when the log cannot be perturbed.
+std::vector<RobustnessRow> runRobustnessCell(const MeasurementLog& log, const RobustnessStudyOptions& options,
+                                             const RobustnessCell& cell,
+                                             const std::function<void()>& runFinished = {});
+
 RobustnessStudy runRobustnessStudy(const MeasurementLog& log, const RobustnessStudyOptions& options);
 
-/// CSV: axis,level,seed,method,ate_rmse,rot_rmse,da_accuracy,landmarks_estimated,landmarks_true,time_s,stuck
-/// (numbers in shortest round-trip form, NaN and absent values empty, stuck 0/1 or empty).
+/// CSV: axis,level,seed,method,ate_rmse,rot_rmse,da_accuracy,da_accuracy_real,landmarks_estimated,landmarks_true,
+/// stuck (numbers in shortest round-trip form, NaN and absent values empty, stuck 0/1 or empty).
 std::string robustnessCsv(const std::vector<RobustnessRow>& rows);
+
+/// timings.csv: axis,level,seed,method,rank,time_s,threads,ranks,wall_time_s, one row per run in row order (rank:
+/// the process that ran the run's cell; threads, ranks and the study's wall time repeated on every row).
+std::string robustnessTimingsCsv(const std::vector<RobustnessRow>& rows, const StudyLayout& layout,
+                                 std::size_t methodsPerCell);
 
 /// Mean and two-sided 95% Student-t confidence interval of the finite values (n < 2: the interval is NaN).
 struct MeanInterval {
@@ -102,7 +116,7 @@ double studentT975(int dof);
 
 /// Summary CSV, one row per (axis, level, method) in row order:
 /// axis,level,method,n,ate_mean,ate_ci_low,ate_ci_high,rot_mean,rot_ci_low,rot_ci_high,da_mean,da_ci_low,
-/// da_ci_high,landmarks_mean,time_mean,stuck_fraction,failed
+/// da_ci_high,da_real_mean,da_real_ci_low,da_real_ci_high,landmarks_mean,stuck_fraction,failed
 std::string robustnessSummaryCsv(const std::vector<RobustnessRow>& rows);
 
 }  // namespace semslam

@@ -17,7 +17,7 @@ int failedRobustnessRuns(const std::vector<RobustnessRow>& rows) {
 std::string robustnessStudyJson(const RobustnessStudy& study, const RobustnessStudyOptions& options,
                                 const RobustnessStudyLabels& labels) {
   const nlohmann::json settings = {
-      {"schema", "semslam.study.robustness/1"},
+      {"schema", "semslam.study.robustness/2"},
       {"version", std::string(version())},
       {"log", labels.log},
       {"methods", labels.methods},
@@ -42,10 +42,8 @@ std::string robustnessStudyJson(const RobustnessStudy& study, const RobustnessSt
       {"model_misclassification_floor", options.modelMisclassificationFloor},
       {"stuck_ratio", options.stuckRatio},
       {"stuck_margin_m", options.stuckMargin},
-      {"threads", options.threads},
       {"runs", study.rows.size()},
       {"failed_runs", failedRobustnessRuns(study.rows)},
-      {"wall_time_s", study.wallSeconds},
   };
   return settings.dump(2) + "\n";
 }
@@ -60,6 +58,7 @@ void writeRobustnessStudyFolder(const std::string& directory, const RobustnessSt
   write("robustness.csv", robustnessCsv(study.rows));
   write("robustness_summary.csv", robustnessSummaryCsv(study.rows));
   write("study.json", robustnessStudyJson(study, options, labels));
+  write("timings.csv", robustnessTimingsCsv(study.rows, study.layout, options.methods.size()));
 }
 
 }  // namespace semslam

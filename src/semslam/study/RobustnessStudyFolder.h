@@ -3,11 +3,13 @@
 // which python/plot_robustness.py draws:
 //   robustness.csv          one row per axis, level, seed and method (robustnessCsv)
 //   robustness_summary.csv  mean and 95% t-interval per axis, level and method (robustnessSummaryCsv)
-//   study.json              schema "semslam.study.robustness/1", version (the semslam release that wrote it,
+//   study.json              schema "semslam.study.robustness/2", version (the semslam release that wrote it,
 //                           core/Version.h): the settings the study ran with (log, methods,
 //                           levels, seeds, paper B's options: gate, null_weight, null_sigma_scale, em_window,
-//                           em_iterations, warm_start, label_split; smoother, model floor, stuck rule,
-//                           threads), the number of runs and failed runs, and the wall time.
+//                           em_iterations, warm_start, label_split; smoother, model floor, stuck rule), the number
+//                           of runs and failed runs (/1 also held threads and the wall time: now in timings.csv)
+//   timings.csv             every run's time, the rank that ran it, threads, ranks, the study's wall time
+//                           (robustnessTimingsCsv): the one file that differs between layouts (StudyLayout.h)
 // Every file is written atomically; the folder is created if needed.
 
 #include <string>
