@@ -53,7 +53,7 @@ test: build
 	ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS)
 
 demo: build
-	$(BUILD_DIR)/bin/semslam demo --out $(BUILD_DIR)/demo
+	$(BUILD_DIR)/bin/semslam demo --overwrite --out $(BUILD_DIR)/demo
 	$(PYTHON) python/plot_run.py $(BUILD_DIR)/demo --compare $(BUILD_DIR)/demo/known \
 	  --title "semslam demo: paper B's mm-nh and known association among look-alike landmarks"
 
