@@ -5,6 +5,8 @@
 //   - an object with more than kMaxJsonObjectKeys keys (nlohmann's ordered objects insert in linear time, so the
 //     count bounds the parse's quadratic term; no semslam object has more than 20 keys);
 //   - a key appearing twice in one object (found with a hash set per open object: linear time);
+//   (the last two by a SAX pass that builds nothing, before the plain parser builds the value: nlohmann's callback
+//   parser is quadratic in the length of an array of objects);
 //   - invalid JSON, with nlohmann's message shortened and escaped (it quotes the last token read, unbounded).
 // The line of a problem is `firstLine` plus the newlines before it; a key problem (the parser does not say where
 // it is) is reported at `firstLine` for one-line text and at line 0 (the file as a whole) for longer text.
