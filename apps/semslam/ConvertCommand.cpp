@@ -9,8 +9,8 @@
 
 #include "Commands.h"
 #include "semslam/core/InputError.h"
-#include "semslam/io/MeasurementLogFile.h"
 #include "semslam/io/convert/DatasetConverters.h"
+#include "semslam/io/MeasurementLogFile.h"
 #include "semslam/io/OutputTarget.h"
 
 namespace semslam::cli {

@@ -9,10 +9,10 @@
 
 #include "Commands.h"
 #include "semslam/core/ProgressBar.h"
+#include "semslam/io/OutputTarget.h"
 #include "semslam/io/PoseGraphFile.h"
 #include "semslam/io/PoseGraphOptimizationReport.h"
 #include "semslam/run/PoseGraphOptimization.h"
-#include "semslam/io/OutputTarget.h"
 
 namespace semslam::cli {
 

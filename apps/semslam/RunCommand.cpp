@@ -16,11 +16,11 @@
 #include "semslam/core/InputError.h"
 #include "semslam/core/ProgressBar.h"
 #include "semslam/io/MeasurementLogFile.h"
+#include "semslam/io/OutputTarget.h"
+#include "semslam/io/StagedFolder.h"
 #include "semslam/run/KnownTrajectoryCeiling.h"
 #include "semslam/run/RunMethod.h"
 #include "semslam/solve/UnconstrainedSystem.h"
-#include "semslam/io/StagedFolder.h"
-#include "semslam/io/OutputTarget.h"
 
 namespace semslam::cli {
 namespace {

@@ -30,7 +30,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// Seeds are unsigned 64-bit integers; CLI11 would wrap a negative one silently.
 // ---- aliased2d ----
 
 struct AliasedOptions {

@@ -7,8 +7,8 @@
 #include <string_view>
 
 #include "semslam/core/InputError.h"
-#include "semslam/core/InputFile.h"
 #include "semslam/core/InputExcerpt.h"
+#include "semslam/core/InputFile.h"
 
 namespace semslam {
 

@@ -6,12 +6,12 @@
 #include <sstream>
 #include <variant>
 
-#include "semslam/io/AtomicFile.h"
 #include "semslam/core/InputError.h"
-#include "semslam/core/JsonNesting.h"
 #include "semslam/core/InputExcerpt.h"
 #include "semslam/core/InputFile.h"
+#include "semslam/core/JsonNesting.h"
 #include "semslam/core/Version.h"
+#include "semslam/io/AtomicFile.h"
 
 namespace semslam {
 namespace {

@@ -10,9 +10,9 @@
 #include <stdexcept>
 
 #include "semslam/core/InputError.h"
-#include "semslam/core/JsonNesting.h"
 #include "semslam/core/InputExcerpt.h"
 #include "semslam/core/InputFile.h"
+#include "semslam/core/JsonNesting.h"
 
 namespace semslam {
 
