@@ -6,6 +6,8 @@
 #   make demo     build, then run paper B's mm-nh and known association on the built-in ambiguous log, plot both
 #   make bench    build and run the benchmarks (installs libceres-dev for the Ceres comparison), then the
 #                 incremental replay benchmark and the candidate pre-selection benchmark
+#   make fuzz     build the libFuzzer harnesses of fuzz/ with clang-14 (installs clang-14 and libclang-rt-14-dev),
+#                 run each FUZZ_SECONDS seconds (default 60) and print executions, exec/s, corpus size and findings
 #   make results  regenerate the measured results in docs/results.md
 #   make install  build, then install under PREFIX (default /usr/local; sudo only when PREFIX is not writable):
 #                 bin/semslam, include/semslam, lib/libsemslam.a, lib/cmake/semslam (find_package(semslam)),
@@ -22,6 +24,9 @@ DEB_PACKAGES := build-essential cmake pkg-config libeigen3-dev libsuitesparse-de
                 libcli11-dev nlohmann-json3-dev libboost-dev python3 python3-matplotlib python3-numpy \
                 python3-scipy libopenmpi-dev openmpi-bin
 BENCH_PACKAGES := libbenchmark-dev libceres-dev
+FUZZ_PACKAGES := clang-14 libclang-rt-14-dev
+FUZZ_SECONDS ?= 60
+FUZZ_HARNESSES := $(notdir $(wildcard fuzz/corpus/*))
 
 # Installs each named package that dpkg does not report as installed; `apt-get update` first, since a fresh
 # machine has no package lists.
@@ -35,7 +40,7 @@ define install_missing
 	fi
 endef
 
-.PHONY: deps deps-bench configure build test demo bench results install clean
+.PHONY: deps deps-bench deps-fuzz configure build test demo bench fuzz results install clean
 
 deps:
 	$(call install_missing,$(DEB_PACKAGES))
@@ -53,7 +58,7 @@ test: build
 	ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS)
 
 demo: build
-	$(BUILD_DIR)/bin/semslam demo --out $(BUILD_DIR)/demo
+	$(BUILD_DIR)/bin/semslam demo --overwrite --out $(BUILD_DIR)/demo
 	$(PYTHON) python/plot_run.py $(BUILD_DIR)/demo --compare $(BUILD_DIR)/demo/known \
 	  --title "semslam demo: paper B's mm-nh and known association among look-alike landmarks"
 
@@ -64,6 +69,17 @@ bench: deps-bench
 	$(BUILD_DIR)-bench/bin/semslam_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 	$(BUILD_DIR)-bench/bin/semslam_incremental_bench
 	$(BUILD_DIR)-bench/bin/semslam_preselection_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+
+deps-fuzz: deps
+	$(call install_missing,$(FUZZ_PACKAGES))
+
+# The library and the harnesses with -fsanitize=fuzzer,address,undefined in their own build folder.
+fuzz: deps-fuzz
+	CC=clang-14 CXX=clang++-14 cmake -S . -B $(BUILD_DIR)-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DSEMSLAM_BUILD_TESTS=OFF -DSEMSLAM_BUILD_EXAMPLES=OFF -DSEMSLAM_BUILD_BENCH=OFF -DSEMSLAM_BUILD_FUZZ=ON \
+	  "-DCMAKE_CXX_FLAGS=-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all"
+	cmake --build $(BUILD_DIR)-fuzz -j $(JOBS) --target $(addprefix fuzz_,$(FUZZ_HARNESSES))
+	$(PYTHON) fuzz/run_fuzzers.py --bin $(BUILD_DIR)-fuzz/bin --seconds $(FUZZ_SECONDS) --work $(BUILD_DIR)-fuzz/work
 
 results: build
 	$(PYTHON) python/make_results.py --build $(BUILD_DIR)
@@ -77,4 +93,4 @@ install: build
 	$$sudo cmake --install $(BUILD_DIR) --prefix "$(PREFIX)"
 
 clean:
-	rm -rf $(BUILD_DIR) $(BUILD_DIR)-bench
+	rm -rf $(BUILD_DIR) $(BUILD_DIR)-bench $(BUILD_DIR)-fuzz

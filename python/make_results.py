@@ -210,7 +210,7 @@ def hybrid_section(semslam, data, scratch, python):
     runs = {}
     for method in ("hybrid", "hybrid-geometric"):
         runs[method] = os.path.join(scratch, method)
-        run([semslam, "run", "--method", method, "--in", track, "--out", runs[method], "--seed", "1"])
+        run([semslam, "run", "--overwrite", "--method", method, "--in", track, "--out", runs[method], "--seed", "1"])
     run([python, os.path.join("python", "plot_hybrid.py"), "fig4", runs["hybrid"], runs["hybrid-geometric"],
          "--steps", "1,3,5,9", "--out", os.path.join(figures, "hybrid_fig4.png")])
     lines += ["Figures: `docs/figures/hybrid_fig4.png` (Fig. 4 analog, `semslam simulate aliased2d --steps 10 --seed 3`, "
@@ -232,8 +232,8 @@ def hybrid_section(semslam, data, scratch, python):
     for method in ("hybrid", "hybrid-geometric"):
         for weights in ("sampled", "importance", "analytic"):
             out = os.path.join(scratch, f"litw-{method}-{weights}")
-            command = [semslam, "run", "--method", method, "--weights", weights, "--branching", "one-at-a-time",
-                       "--max-components", "20", "--in", log, "--out", out]
+            command = [semslam, "run", "--overwrite", "--method", method, "--weights", weights, "--branching",
+                       "one-at-a-time", "--max-components", "20", "--in", log, "--out", out]
             run(command)
             with open(os.path.join(out, "metrics.json")) as f:
                 m = json.load(f)

@@ -62,7 +62,8 @@ def association_section(semslam, data, scratch, shown):
         for v, robot, log, convert_args, runs in jobs:
             for r, (label, method, extra) in enumerate(runs):
                 out = os.path.join(scratch, f"association_v{v}_r{robot}_{r}")
-                command = [semslam, "run", "--method", method, "--in", log, "--out", out, "--no-covariances"] + extra
+                command = [semslam, "run", "--overwrite", "--method", method, "--in", log, "--out", out,
+                           "--no-covariances"] + extra
                 tasks.append((v, robot, label, out, command))
         list(pool.map(lambda task: run_checked(task[4]), tasks))
     for v, (title, convert_args, runs) in enumerate(VARIANTS):
@@ -111,7 +112,8 @@ def kitti_generalisation_section(semslam, data, scratch, shown):
         for method in KITTI_METHODS:
             out = os.path.join(scratch, f"kitti{sequence}-seed{seed}-{method}")
             jobs.append((sequence, seed, method, out,
-                         [semslam, "run", "--method", method, "--in", log, "--out", out, "--no-covariances"]))
+                         [semslam, "run", "--overwrite", "--method", method, "--in", log, "--out", out,
+                          "--no-covariances"]))
     if not jobs:
         return lines[:2] + ["KITTI odometry poses are absent: section skipped.", ""]
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, (os.cpu_count() or 2))) as pool:

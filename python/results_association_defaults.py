@@ -73,7 +73,7 @@ def association_defaults_section(semslam, data, scratch):
         for l, (name, log) in enumerate(logs):
             out = os.path.join(scratch, f"defaults_{s}_{l}")
             flags = [item for pair in setting.items() for item in pair]
-            jobs.append((s, name, out, [semslam, "run", "--method", "mm-nh", "--in", log, "--out", out,
+            jobs.append((s, name, out, [semslam, "run", "--overwrite", "--method", "mm-nh", "--in", log, "--out", out,
                                         "--no-covariances"] + flags))
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, (os.cpu_count() or 2))) as pool:
         list(pool.map(lambda job: run_checked(job[3]), jobs))

@@ -96,7 +96,7 @@ def convert_command(semslam, folder, sequence, config, out, max_steps=None, seed
 
 
 def run_command(semslam, method, log, out, extra=()):
-    return [semslam, "run", "--method", method, "--in", log, "--out", out, "--no-covariances", *extra]
+    return [semslam, "run", "--overwrite", "--method", method, "--in", log, "--out", out, "--no-covariances", *extra]
 
 
 def rpe_command(semslam, run_dir):

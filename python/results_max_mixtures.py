@@ -50,7 +50,7 @@ def _methods_on_log(semslam, log, name, scratch, figures, title, extra=()):
     runs = []
     for method in METHODS:
         folder = os.path.join(scratch, name, method)
-        run_checked([semslam, "run", "--method", method, "--in", log, "--out", folder, *extra])
+        run_checked([semslam, "run", "--overwrite", "--method", method, "--in", log, "--out", folder, *extra])
         runs.append((method, folder))
     figure = os.path.join(figures, f"{name}_methods.png")
     run_checked([sys.executable, os.path.join(HERE, "plot_methods.py"), *[f for _, f in runs], "--out", figure,
@@ -85,7 +85,8 @@ def max_mixture_sections(semslam, data, scratch, shown):
                       "| gate | DA accuracy | landmarks (true) | ATE RMSE [m] | time [s] |", "|---|---|---|---|---|"]
         for gate in ["0.9", "0.999", "0.999999"]:
             folder = os.path.join(scratch, "litw-gate", gate)
-            run_checked([semslam, "run", "--method", "mm-nh", "--gate", gate, "--in", log, "--out", folder,
+            run_checked([semslam, "run", "--overwrite", "--method", "mm-nh", "--gate", gate, "--in", log,
+                         "--out", folder,
                   "--no-covariances"])
             m = read_metrics(folder)
             gate_lines.append(f"| {gate} | {_number(m.get('da_accuracy'))} | {m.get('landmarks_estimated')} "
@@ -101,7 +102,8 @@ def max_mixture_sections(semslam, data, scratch, shown):
         for method in ["known", "mm-nh"]:
             for smoother in ["incremental", "batch"]:
                 folder = os.path.join(scratch, "litw-backend", method, smoother)
-                run_checked([semslam, "run", "--method", method, "--smoother", smoother, "--in", log, "--out", folder,
+                run_checked([semslam, "run", "--overwrite", "--method", method, "--smoother", smoother, "--in", log,
+                             "--out", folder,
                       "--no-covariances"])
                 m = read_metrics(folder)
                 backend_lines.append(f"| {method} | {smoother} | {_number(m.get('ate_rmse'))} | "

@@ -9,8 +9,9 @@
 
 #include "Commands.h"
 #include "semslam/core/InputError.h"
-#include "semslam/io/MeasurementLogFile.h"
 #include "semslam/io/convert/DatasetConverters.h"
+#include "semslam/io/MeasurementLogFile.h"
+#include "semslam/io/OutputTarget.h"
 
 namespace semslam::cli {
 
@@ -41,6 +42,8 @@ void run(ConvertArguments arguments) {
                      "--matches-out apply to kitti-tracking only, not to " +
                      arguments.kind);
   }
+  requireOutputSparesInput(arguments.out, arguments.path, "--out");
+  requireReplaceableFile(arguments.out);
   ConversionStats stats;
   const MeasurementLog log = convertDataset(arguments.kind, arguments.path, options, &stats);
   writeMeasurementLog(arguments.out, log);

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "Commands.h"
+#include "OptionValidators.h"
 #include "semslam/run/Demo.h"
 
 namespace semslam::cli {
@@ -17,6 +18,7 @@ namespace {
 struct DemoOptions {
   std::string out = "demo";
   std::uint64_t seed = 1;
+  bool overwrite = false;
 };
 
 void printRun(const char* label, const MethodRun& run) {
@@ -26,7 +28,7 @@ void printRun(const char* label, const MethodRun& run) {
 }
 
 void run(const DemoOptions& options) {
-  const DemoRun demo = runDemo(options.out, options.seed);
+  const DemoRun demo = runDemo(options.out, options.seed, options.overwrite);
   std::size_t detections = 0, clutter = 0;
   for (const TimeStep& step : demo.log.steps) {
     detections += step.detections.size();
@@ -48,7 +50,10 @@ void addDemoCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "demo", "Paper B's mm-nh on a small built-in semantic log with ambiguous association (and known beside it)");
   command->add_option("--out", options->out, "output folder")->capture_default_str();
-  command->add_option("--seed", options->seed, "seed of the built-in log")->capture_default_str();
+  command->add_option("--seed", options->seed, "seed of the built-in log")
+      ->check(unsignedInteger64())
+      ->capture_default_str();
+  command->add_flag("--overwrite", options->overwrite, "replace an existing non-empty --out folder whole");
   command->callback([options]() { run(*options); });
 }
 

@@ -63,7 +63,7 @@ void addHybridOptions(CLI::App* command, HybridOptions& options) {
   const std::map<std::string, Branching> branching{{"whole", Branching::WholeAssociation},
                                                    {"one-at-a-time", Branching::OneDetectionAtATime}};
   command->add_option("--samples", options.samples, "hybrid: samples per weight (A, eq. 16)")
-      ->check(CLI::Range(2, 100000000))
+      ->check(CLI::Range(2, 1000000))
       ->capture_default_str();
   command
       ->add_option("--weights", options.weights,

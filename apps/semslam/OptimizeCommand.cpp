@@ -9,6 +9,7 @@
 
 #include "Commands.h"
 #include "semslam/core/ProgressBar.h"
+#include "semslam/io/OutputTarget.h"
 #include "semslam/io/PoseGraphFile.h"
 #include "semslam/io/PoseGraphOptimizationReport.h"
 #include "semslam/run/PoseGraphOptimization.h"
@@ -57,6 +58,13 @@ void printMarginals(const JointMarginal& joint) {
 }
 
 void run(OptimizeArguments arguments) {
+  // Outputs are checked before the work: never an input, a link or a device (io/OutputTarget.h).
+  for (const auto& [output, flag] : {std::pair{arguments.out, "--out"}, std::pair{arguments.report, "--report"},
+                                     std::pair{arguments.stepTimes, "--step-times"}}) {
+    if (output.empty()) continue;
+    requireOutputSparesInput(output, arguments.options.file, flag);
+    requireReplaceableFile(output);
+  }
   arguments.options.solver = arguments.solver == "lm" ? SolverType::LevenbergMarquardt : SolverType::GaussNewton;
   // The incremental replay shows its progress per step (core/ProgressBar.h); the number of steps is known once
   // the file is read, at the first step.
@@ -103,7 +111,9 @@ void addOptimizeCommand(CLI::App& app) {
   command->add_option("--marginals", options.marginals,
                       "comma-separated ids whose marginal and joint covariance to report (x12,l3 for iSAM)");
   command->add_option("--report", arguments->report, "write a JSON report");
-  command->add_option("--max-iterations", options.maxIterations, "iteration limit")->capture_default_str();
+  command->add_option("--max-iterations", options.maxIterations, "iteration limit")
+      ->check(CLI::Range(0, 1000000))
+      ->capture_default_str();
   command->add_flag("--verbose", options.verbose, "print every iteration");
   command->add_flag("--incremental", options.incremental,
                     "replay the graph pose by pose through the incremental smoother (iSAM2-style), reading the "

@@ -12,10 +12,13 @@
 
 #include "Commands.h"
 #include "MethodOptions.h"
+#include "OptionValidators.h"
 #include "semslam/core/InputError.h"
 #include "semslam/core/ProgressBar.h"
 #include "semslam/hybrid/HybridRun.h"
 #include "semslam/io/MeasurementLogFile.h"
+#include "semslam/io/OutputTarget.h"
+#include "semslam/io/StagedFolder.h"
 #include "semslam/run/KnownTrajectoryCeiling.h"
 #include "semslam/run/RunMethod.h"
 #include "semslam/solve/UnconstrainedSystem.h"
@@ -32,6 +35,7 @@ struct RunArguments {
   bool onKnownTrajectory = false;
   double poseErrorScale = 0.0;
   bool quiet = false;
+  bool overwrite = false;
   MethodOptions options;
 };
 
@@ -51,6 +55,9 @@ void printSummary(const RunArguments& arguments, const MeasurementLog& log, cons
 }
 
 void run(RunArguments arguments) {
+  // The folder is checked and staged before the work, and renamed into place whole after it (io/StagedFolder.h).
+  requireOutputSparesInput(arguments.out, arguments.in, "--out");
+  StagedFolder folder(arguments.out, arguments.overwrite);
   const MeasurementLog log = readMeasurementLog(arguments.in);
   MethodOptions& options = arguments.options;
   options.method = parseMethod(arguments.method);
@@ -75,7 +82,8 @@ void run(RunArguments arguments) {
                          " (In a measurement log the header's initial_pose is the prior on the first pose and "
                          "landmark_priors hold known landmarks; docs/measurement-log.md.)");
   }
-  writeMethodRun(arguments.out, result);
+  writeMethodRun(folder.path(), result);
+  folder.commit();
   printSummary(arguments, log, result);
 }
 
@@ -105,9 +113,11 @@ void addRunCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--seed", arguments->options.hybrid.seed,
                       "hybrid: seed of the Monte Carlo draws; --pose-error-scale: seed of the pose errors")
+      ->check(unsignedInteger64())
       ->capture_default_str();
   addHybridOptions(command, arguments->options.hybrid);
   command->add_flag("--quiet", arguments->quiet, "no progress line");
+  command->add_flag("--overwrite", arguments->overwrite, "replace an existing non-empty --out folder whole");
   command->callback([arguments]() { run(*arguments); });
 }
 

@@ -11,13 +11,16 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "Commands.h"
+#include "OptionValidators.h"
 #include "semslam/core/InputError.h"
 #include "semslam/core/ProgressBar.h"
 #include "semslam/io/Aliased2dTrackFolder.h"
 #include "semslam/io/MeasurementLogFile.h"
+#include "semslam/io/OutputTarget.h"
 #include "semslam/io/ScenarioFile.h"
 #include "semslam/io/SemanticSimulationTruth.h"
 #include "semslam/sim/Aliased2dLayout.h"
@@ -28,14 +31,6 @@ namespace semslam::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// Seeds are unsigned 64-bit integers; CLI11 would wrap a negative one silently.
-const CLI::Validator kSeedValidator(
-    [](std::string& value) -> std::string {
-      if (!value.empty() && value.front() == '-') return "a seed must be a non-negative integer, found " + value;
-      return {};
-    },
-    "UINT64");
 
 // ---- aliased2d ----
 
@@ -49,6 +44,7 @@ struct AliasedOptions {
   std::string out;
   std::string writeScenario;
   bool quiet = false;
+  bool overwrite = false;
 };
 
 Aliased2dScenario scenarioOf(const AliasedOptions& options) {
@@ -58,6 +54,12 @@ Aliased2dScenario scenarioOf(const AliasedOptions& options) {
 }
 
 void runAliased(const AliasedOptions& options) {
+  if (!options.scenario.empty()) {
+    if (!options.out.empty()) requireOutputSparesInput(options.out, options.scenario, "--out");
+    if (!options.writeScenario.empty()) {
+      requireOutputSparesInput(options.writeScenario, options.scenario, "--write-scenario");
+    }
+  }
   Aliased2dScenario scenario = scenarioOf(options);
   if (options.alpha) {
     if (!(*options.alpha >= 0.0 && *options.alpha <= 1.0)) {
@@ -84,7 +86,7 @@ void runAliased(const AliasedOptions& options) {
   }
   // One line rewritten in place on a terminal, a line every few seconds otherwise (core/ProgressBar.h).
   ProgressBar progress("simulate aliased2d tracks", options.tracks, options.quiet);
-  writeAliased2dTrackFolder(options.out, scenario, options.seed, options.tracks, options.steps,
+  writeAliased2dTrackFolder(options.out, scenario, options.seed, options.tracks, options.steps, options.overwrite,
                             [&progress](int done, int) { progress.update(done); });
   std::printf("wrote %d tracks of %d steps (scenario '%s', seed %llu) to %s/\n", options.tracks, options.steps,
               scenario.name.c_str(), static_cast<unsigned long long>(options.seed), options.out.c_str());
@@ -103,19 +105,21 @@ void addAliased(CLI::App& simulate) {
       ->check(kSeedValidator)
       ->excludes(scenario);
   command->add_option("--tracks", options->tracks, "number of ground-truth tracks")
-      ->check(CLI::Range(1, 1000000))
+      ->check(CLI::Range(1, 100000))
       ->capture_default_str();
   command->add_option("--steps", options->steps, "steps per track after the start")
-      ->check(CLI::Range(1, 100000000))
+      ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
   command->add_option("--seed", options->seed, "random seed (unsigned 64-bit)")
-      ->check(kSeedValidator)
+      ->check(unsignedInteger64())
       ->capture_default_str();
   command->add_option("--alpha", options->alpha, "classifier viewpoint dependency (overrides the scenario's)");
   command->add_option("--out", options->out, "the log (one track) or a folder of track_NNN.jsonl (several)");
   command->add_option("--write-scenario", options->writeScenario,
                       "write the scenario in effect (after --alpha) as JSON to this file");
   command->add_flag("--quiet", options->quiet, "no progress line");
+  command->add_flag("--overwrite", options->overwrite,
+                    "several tracks: replace an existing non-empty --out folder whole");
   command->callback([options]() { runAliased(*options); });
 }
 
@@ -130,14 +134,20 @@ struct SemanticCliOptions {
 };
 
 void runSemantic(const SemanticCliOptions& options) {
+  if (!options.truth.trajectory.empty()) requireOutputSparesInput(options.out, options.truth.trajectory, "--out");
   // A long trajectory file (KITTI 00: 4541 poses) takes seconds: one progress line (core/ProgressBar.h), made at
   // the first step, when the number of steps is known.
   std::optional<ProgressBar> progress;
-  const SemanticSimulation simulation =
-      simulateSemanticRun(options.truth, options.sim, options.seed, [&progress, &options](int done, int total) {
-        if (!progress) progress.emplace("simulate semantic", total, options.quiet);
-        progress->update(done);
-      });
+  SemanticSimulation simulation;
+  try {
+    simulation =
+        simulateSemanticRun(options.truth, options.sim, options.seed, [&progress, &options](int done, int total) {
+          if (!progress) progress.emplace("simulate semantic", total, options.quiet);
+          progress->update(done);
+        });
+  } catch (const std::invalid_argument& error) {  // an option out of range: bad input
+    throw InputError(std::string("simulate semantic: ") + error.what());
+  }
   const MeasurementLog& log = simulation.log;
   writeMeasurementLog(options.out, log);
   std::size_t detections = 0;
@@ -153,7 +163,9 @@ void addSemantic(CLI::App& simulate) {
   CLI::App* command = simulate.add_subcommand(
       "semantic", "Paper B-style semantic SLAM run in 2D or 3D: landmarks with classes, labels, clutter");
   command->add_option("--out", o.out, "the log to write")->required();
-  command->add_option("--seed", o.seed, "random seed (unsigned 64-bit)")->check(kSeedValidator)->capture_default_str();
+  command->add_option("--seed", o.seed, "random seed (unsigned 64-bit)")
+      ->check(unsignedInteger64())
+      ->capture_default_str();
   SemanticTruthOptions& t = o.truth;
   command->add_option("--dimension", t.dimension, "2 or 3")->check(CLI::IsMember({2, 3}))->capture_default_str();
   command->add_option("--trajectory", t.trajectory, "true trajectory file (default: a generated path)")
@@ -168,7 +180,8 @@ void addSemantic(CLI::App& simulate) {
   command->add_option("--path", t.path, "generated path: loop (seeded) or lawnmower")
       ->check(CLI::IsMember({"loop", "lawnmower"}))
       ->capture_default_str();
-  command->add_option("--steps", t.steps, "steps after the first pose (generated: default 200; file: 0 = all)");
+  command->add_option("--steps", t.steps, "steps after the first pose (generated: default 200; file: 0 = all)")
+      ->check(CLI::Range(0, 1000000));
   command->add_option("--step-length", t.stepLength, "generated path: metres per step")->capture_default_str();
   command->add_option("--loops", t.loops, "loop path: times around")->capture_default_str();
   command->add_option("--row-length", t.rowLength, "lawnmower: row length (m)")->capture_default_str();
@@ -176,8 +189,11 @@ void addSemantic(CLI::App& simulate) {
   command->add_option("--height-amplitude", t.heightAmplitude, "3D loop: height undulation (m)")->capture_default_str();
   command->add_option("--time-step", t.timeStep, "seconds per step (generated: 1; file without times: 0.1)");
   SemanticSimOptions& s = o.sim;
-  command->add_option("--classes", s.classes, "number of classes M")->capture_default_str();
+  command->add_option("--classes", s.classes, "number of classes M")
+      ->check(CLI::Range(1, 2048))
+      ->capture_default_str();
   command->add_option("--landmarks", s.landmarks, "number of landmarks (0: from --landmark-density)")
+      ->check(CLI::Range(0, 1000000))
       ->capture_default_str();
   command->add_option("--landmark-density", s.landmarkDensity, "landmarks per metre of path")->capture_default_str();
   command->add_option("--min-offset", s.minOffset, "landmarks' least lateral distance from the path (m)")

@@ -115,8 +115,8 @@ TEST(RunCommand, TheConfirmationSpacingReachesTheProvisionalLandmarkRule) {
   ASSERT_EQ(runSemslam("simulate semantic --steps 30 --seed 4 --out \"" + log.string() + "\"").exitCode, 0);
   auto landmarks = [&](const std::string& flags) {
     const fs::path out = dir / "out";
-    const auto result = runSemslam("run --method mm-nh --in \"" + log.string() + "\" --out \"" + out.string() + "\" " +
-                                   flags);
+    const auto result = runSemslam("run --method mm-nh --overwrite --in \"" + log.string() + "\" --out \"" +
+                                   out.string() + "\" " + flags);
     EXPECT_EQ(result.exitCode, 0) << result.output;
     std::ifstream metricsFile(out / "metrics.json");
     return nlohmann::json::parse(metricsFile)["landmarks_estimated"].get<int>();
@@ -189,7 +189,7 @@ TEST(RunCommand, EveryMethodShowsProgressUnlessQuiet) {
   ASSERT_EQ(runSemslam("simulate semantic --steps 20 --seed 4 --out \"" + log.string() + "\"").exitCode, 0);
   for (const std::string method : {"known", "ml", "gpda", "mm", "mm-nh"}) {
     const std::string command = "run --method " + method + " --in \"" + log.string() + "\" --out \"" +
-                                (dir / method).string() + "\" --no-covariances";
+                                (dir / method).string() + "\" --no-covariances --overwrite";
     // Off a terminal (the output here is a pipe) the last line comes at the end of a run however short it is.
     const auto shown = runSemslam(command);
     ASSERT_EQ(shown.exitCode, 0) << shown.output;

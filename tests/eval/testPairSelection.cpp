@@ -61,3 +61,25 @@ TEST(PairSelection, InvalidDeltasAndEmptyResultsThrow) {
 
 }  // namespace
 }  // namespace semslam
+
+namespace semslam {
+namespace {
+
+TEST(PairSelection, AHugeFrameDeltaPairsNothingInsteadOfOverflowing) {
+  // eval rpe --delta 1e300 cast the delta to size_t (undefined; it became 0 and the loop never ended).
+  const Trajectory t = alongX({0, 1, 2, 3, 4, 5, 6, 7, 8, 9});
+  for (const double delta : {10.0, 1e19, 1e300}) {
+    for (const bool all : {false, true}) {
+      try {
+        selectPosePairs(t, delta, DeltaUnit::Frames, all, 0.1);
+        ADD_FAILURE() << "no error for delta " << delta;
+      } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("produced no pose pair"), std::string::npos) << error.what();
+      }
+    }
+  }
+  EXPECT_EQ(selectPosePairs(t, 9.0, DeltaUnit::Frames, false, 0.1).size(), 1u);
+}
+
+}  // namespace
+}  // namespace semslam

@@ -55,7 +55,7 @@ TEST(TumFormat, MalformedInputNamesFileAndLine) {
   expectInputErrorReading(read, "# only a comment\n\n", 0, "empty");
   expectInputErrorReading(read, "1.0.0 0 0 0 0 0 0 1\n", 1, "not a number");
   expectInputError([] { readTumTrajectory("/nonexistent/semslam/traj.txt"); }, "/nonexistent/semslam/traj.txt", 0,
-                   "cannot open");
+                   "does not exist");
   const std::string dir = std::filesystem::temp_directory_path().string();
   expectInputError([&] { readTumTrajectory(dir); }, dir, 0, "directory");
 }

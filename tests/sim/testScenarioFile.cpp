@@ -222,5 +222,19 @@ TEST(ScenarioFile, TheWriterRejectsAnInvalidScenario) {
   EXPECT_THROW(aliased2dScenarioToJson(scenario), std::invalid_argument);
 }
 
+TEST(ScenarioFile, HostileNestingAndValuesTheMotionModelWouldIgnoreAreRefused) {
+  // 100,000 nested '[' overflowed the parser's stack; a clearance of 1e6 m and an arena radius of 1e-9 m were
+  // accepted and silently ignored by the motion model.
+  expectError("{\"format\":\n" + std::string(100'000, '['), {"nested deeper than 64"}, 2);
+  expectError(R"({"format": "semslam-scenario", "version": 1, "kind": "aliased2d",
+  "objects": [{"id": 3, "class": 1, "pose": [1, 2, 0.5]}], "start": [0, 0, 0],
+  "motion": {"arena": {"center": [0, 0], "radius": 5}, "clearance": 1e6}})",
+              {"motion.clearance", "must be below motion.arena.radius (5), found 1e+06"});
+  expectError(R"({"format": "semslam-scenario", "version": 1, "kind": "aliased2d",
+  "objects": [{"id": 3, "class": 1, "pose": [1, 2, 0.5]}], "start": [0, 0, 0],
+  "motion": {"arena": {"center": [0, 0], "radius": 1e-9}, "clearance": 0}})",
+              {"motion.arena.radius", "must be at least motion.step_length (1), found 1e-09"});
+}
+
 }  // namespace
 }  // namespace semslam

@@ -79,7 +79,10 @@ std::vector<PosePair> selectPosePairs(const Trajectory& trajectory, double delta
   std::vector<PosePair> pairs;
   if (unit == DeltaUnit::Frames) {
     if (delta != std::floor(delta)) throw InputError("RPE: delta in frames must be a whole number, got " + describe(delta));
-    pairs = pairsByIndex(trajectory.size(), static_cast<std::size_t>(delta), allPairs);
+    // A delta of at least the pose count pairs nothing (and a huge one would not fit a size_t).
+    if (delta < static_cast<double>(trajectory.size())) {
+      pairs = pairsByIndex(trajectory.size(), static_cast<std::size_t>(delta), allPairs);
+    }
   } else {
     pairs = pairsByPath(trajectory, delta, delta * relativeTolerance, allPairs);
   }

@@ -4,6 +4,7 @@
 
 #include "semslam/core/InputError.h"
 #include "semslam/io/MeasurementLogFile.h"
+#include "semslam/io/StagedFolder.h"
 #include "semslam/sim/Aliased2dSimulator.h"
 
 namespace semslam {
@@ -17,17 +18,19 @@ std::string aliased2dTrackFileName(int track, int tracks) {
 }
 
 void writeAliased2dTrackFolder(const std::string& directory, const Aliased2dScenario& scenario, std::uint64_t seed,
-                               int tracks, int steps, const std::function<void(int, int)>& progress) {
+                               int tracks, int steps, bool overwrite,
+                               const std::function<void(int, int)>& progress) {
   namespace fs = std::filesystem;
   if (fs::exists(directory) && !fs::is_directory(directory)) {
     throw InputError("--out " + directory + ": is a file; with several tracks --out names a folder");
   }
-  fs::create_directories(directory);
+  StagedFolder folder(directory, overwrite);
   for (int track = 0; track < tracks; ++track) {
     const MeasurementLog log = simulateAliased2dTrack(scenario, seed, track, steps, tracks);
-    writeMeasurementLog((fs::path(directory) / aliased2dTrackFileName(track, tracks)).string(), log);
+    writeMeasurementLog((fs::path(folder.path()) / aliased2dTrackFileName(track, tracks)).string(), log);
     if (progress) progress(track + 1, tracks);
   }
+  folder.commit();
 }
 
 }  // namespace semslam

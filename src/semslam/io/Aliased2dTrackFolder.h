@@ -14,9 +14,12 @@ namespace semslam {
 /// "track_007.jsonl" for track 7 of up to 1000 tracks; wider for more.
 std::string aliased2dTrackFileName(int track, int tracks);
 
-/// Creates `directory` and writes tracks 0 .. tracks − 1 of `steps` steps; progress(done, tracks) after each.
-/// Throws InputError when `directory` names a file.
+/// Writes tracks 0 .. tracks − 1 of `steps` steps into `directory`, built whole or not at all (io/StagedFolder.h:
+/// an interrupted run leaves no folder that looks finished); progress(done, tracks) after each. `directory` must
+/// be absent or empty unless `overwrite` (then it is replaced whole: no stale track of an earlier run stays).
+/// Throws InputError when `directory` names a file, a link or a non-empty folder without `overwrite`.
 void writeAliased2dTrackFolder(const std::string& directory, const Aliased2dScenario& scenario, std::uint64_t seed,
-                               int tracks, int steps, const std::function<void(int, int)>& progress = {});
+                               int tracks, int steps, bool overwrite,
+                               const std::function<void(int, int)>& progress = {});
 
 }  // namespace semslam

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "semslam/core/InputError.h"
+#include "semslam/core/InputExcerpt.h"
 
 namespace semslam::jsonio {
 
@@ -88,7 +89,7 @@ void JsonField::requireObject(std::initializer_list<std::string_view> required,
   if (!value_->is_object()) failType("an object");
   for (const auto& item : value_->items()) {
     if (!contains(required, item.key()) && !contains(optional, item.key())) {
-      fail("unknown field '" + item.key() + "' (accepted: " + joinKeys(required, optional) + ")");
+      fail("unknown field " + inputExcerpt(item.key()) + " (accepted: " + joinKeys(required, optional) + ")");
     }
   }
   for (std::string_view key : required) {

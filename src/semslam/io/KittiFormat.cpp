@@ -7,6 +7,7 @@
 
 #include "semslam/io/TrajectoryTable.h"
 #include "semslam/core/ExactNumber.h"
+#include "semslam/io/AtomicFile.h"
 #include "semslam/core/InputError.h"
 
 namespace semslam {
@@ -64,17 +65,16 @@ Trajectory readKittiTrajectory(const std::string& path) {
 }
 
 void writeKittiTrajectory(const std::string& path, const Trajectory& trajectory, bool withTimestamps) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write " + path);
-  const bool timed = withTimestamps && trajectory.hasTimestamps();
-  for (std::size_t i = 0; i < trajectory.size(); ++i) {
-    const Matrix4 pose = trajectory.pose(i).matrix();
-    if (timed) out << shortestExactNumber(trajectory.timestamp(i)) << ' ';
-    for (int r = 0; r < 3; ++r) {
-      for (int c = 0; c < 4; ++c) out << shortestExactNumber(pose(r, c)) << (r == 2 && c == 3 ? '\n' : ' ');
+  writeFileAtomically(path, [&](std::ostream& out) {
+    const bool timed = withTimestamps && trajectory.hasTimestamps();
+    for (std::size_t i = 0; i < trajectory.size(); ++i) {
+      const Matrix4 pose = trajectory.pose(i).matrix();
+      if (timed) out << shortestExactNumber(trajectory.timestamp(i)) << ' ';
+      for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 4; ++c) out << shortestExactNumber(pose(r, c)) << (r == 2 && c == 3 ? '\n' : ' ');
+      }
     }
-  }
-  if (!out) throw std::runtime_error("error writing " + path);
+  });
 }
 
 }  // namespace semslam

@@ -1,14 +1,12 @@
 #include "semslam/io/LineReader.h"
 
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstring>
-#include <filesystem>
-#include <system_error>
 
-#include "semslam/graph/Key.h"
 #include "semslam/core/InputError.h"
+#include "semslam/core/InputExcerpt.h"
+#include "semslam/core/InputFile.h"
+#include "semslam/graph/Key.h"
 
 namespace semslam {
 
@@ -29,16 +27,10 @@ std::string plural(std::size_t n, const char* noun) { return std::to_string(n) +
 
 }  // namespace
 
-LineReader::LineReader(std::string path) : path_(std::move(path)) {
-  std::error_code error;
-  if (!std::filesystem::exists(path_, error)) throw InputError(path_, 0, "file does not exist");
-  if (std::filesystem::is_directory(path_, error)) throw InputError(path_, 0, "is a directory, not a file");
-  stream_.open(path_, std::ios::binary);
-  if (!stream_) throw InputError(path_, 0, std::string("cannot open file: ") + std::strerror(errno));
-}
+LineReader::LineReader(std::string path) : path_(std::move(path)), stream_(openInputFile(path_)) {}
 
 bool LineReader::next() {
-  while (std::getline(stream_, line_)) {
+  while (readBoundedLine(stream_, line_, path_, lineNumber_ + 1)) {
     ++lineNumber_;
     fields_.clear();
     names_ = {};
@@ -57,7 +49,6 @@ bool LineReader::next() {
     ++records_;
     return true;
   }
-  if (stream_.bad()) throw InputError(path_, lineNumber_ + 1, std::string("read error: ") + std::strerror(errno));
   fields_.clear();
   return false;
 }
@@ -88,12 +79,12 @@ double LineReader::number(std::size_t i) const {
   double value = 0.0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (error == std::errc::result_out_of_range) {
-    fail(describe(i) + " '" + std::string(original) + "' is out of the range of a double");
+    fail(describe(i) + " " + inputExcerpt(original) + " is out of the range of a double");
   }
   if (error != std::errc() || end != text.data() + text.size()) {
-    fail(describe(i) + " '" + std::string(original) + "' is not a number");
+    fail(describe(i) + " " + inputExcerpt(original) + " is not a number");
   }
-  if (!std::isfinite(value)) fail(describe(i) + " is not finite: '" + std::string(original) + "'");
+  if (!std::isfinite(value)) fail(describe(i) + " is not finite: " + inputExcerpt(original));
   return value;
 }
 
@@ -109,10 +100,10 @@ std::uint64_t LineReader::id(std::size_t i) const {
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (error == std::errc::result_out_of_range ||
       (error == std::errc() && end == text.data() + text.size() && value > Symbol::kIndexMask)) {
-    fail(describe(i) + " '" + std::string(text) + "' is too large for an id (ids must be below 2^56)");
+    fail(describe(i) + " " + inputExcerpt(text) + " is too large for an id (ids must be below 2^56)");
   }
   if (error != std::errc() || end != text.data() + text.size()) {
-    fail(describe(i) + " '" + std::string(text) + "' is not a non-negative integer id");
+    fail(describe(i) + " " + inputExcerpt(text) + " is not a non-negative integer id");
   }
   return value;
 }

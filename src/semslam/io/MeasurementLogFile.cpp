@@ -1,15 +1,14 @@
 #include "semslam/io/MeasurementLogFile.h"
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 
-#include "semslam/io/AtomicFile.h"
 #include "semslam/core/InputError.h"
+#include "semslam/core/InputFile.h"
+#include "semslam/io/AtomicFile.h"
 #include "semslam/io/MeasurementLogJson.h"
+#include "semslam/io/StrictJson.h"
 
 namespace semslam {
 
@@ -21,53 +20,6 @@ namespace {
 
 bool isBlankLine(const std::string& line) {
   return std::all_of(line.begin(), line.end(), [](char c) { return c == ' ' || c == '\t' || c == '\r'; });
-}
-
-/// nlohmann's message without its "[json.exception.parse_error.101] parse error at line 1, " prefix.
-std::string parseProblem(const std::string& what) {
-  std::string text = what;
-  if (text.rfind("[json.exception.", 0) == 0) {
-    const auto end = text.find("] ");
-    if (end != std::string::npos) text = text.substr(end + 2);
-  }
-  const std::string prefix = "parse error at line 1, ";
-  if (text.rfind(prefix, 0) == 0) text = text.substr(prefix.size());
-  return text;
-}
-
-/// Parses one line into `record`, rejecting invalid JSON and duplicate keys in any object.
-void parseLine(const std::string& line, const JsonLocation& location, Json& record) {
-  std::vector<std::vector<std::string>> keys;  // the keys seen so far in each open object
-  std::string duplicate;
-  const Json::parser_callback_t callback = [&keys, &duplicate](int, Json::parse_event_t event, Json& parsed) {
-    switch (event) {
-      case Json::parse_event_t::object_start:
-        keys.emplace_back();
-        break;
-      case Json::parse_event_t::key: {
-        std::string key = parsed.get<std::string>();
-        if (duplicate.empty() && std::find(keys.back().begin(), keys.back().end(), key) != keys.back().end()) {
-          duplicate = key;
-        }
-        keys.back().push_back(std::move(key));
-        break;
-      }
-      case Json::parse_event_t::object_end:
-        keys.pop_back();
-        break;
-      default:
-        break;
-    }
-    return true;
-  };
-  try {
-    record = Json::parse(line, callback);
-  } catch (const Json::exception& error) {
-    throw InputError(location.file, location.line, "not valid JSON: " + parseProblem(error.what()));
-  }
-  if (!duplicate.empty()) {
-    throw InputError(location.file, location.line, "duplicate key '" + duplicate + "' (every key appears once)");
-  }
 }
 
 }  // namespace
@@ -84,15 +36,12 @@ struct MeasurementLogReader::State {
 
   /// Reads the next non-blank line into `record`; false at the end of the file.
   bool nextRecord(Json& record) {
-    while (std::getline(stream, line)) {
+    while (readBoundedLine(stream, line, location.file, physicalLine + 1)) {
       ++physicalLine;
       if (isBlankLine(line)) continue;
       location.line = physicalLine;
-      parseLine(line, location, record);
+      record = jsonio::parseStrictJson(line, location.file, location.line);
       return true;
-    }
-    if (stream.bad()) {
-      throw InputError(location.file, physicalLine + 1, std::string("read error: ") + std::strerror(errno));
     }
     return false;
   }
@@ -101,11 +50,7 @@ struct MeasurementLogReader::State {
 MeasurementLogReader::MeasurementLogReader(const std::string& path) : state_(std::make_unique<State>()) {
   State& s = *state_;
   s.location.file = path;
-  std::error_code error;
-  if (!std::filesystem::exists(path, error)) throw InputError(path, 0, "file does not exist");
-  if (std::filesystem::is_directory(path, error)) throw InputError(path, 0, "is a directory, not a file");
-  s.stream.open(path, std::ios::binary);
-  if (!s.stream) throw InputError(path, 0, std::string("cannot open file: ") + std::strerror(errno));
+  s.stream = openInputFile(path);
   Json record;
   if (!s.nextRecord(record)) {
     throw InputError(path, 0, "the file is empty: expected a header line, then one line per time step");
@@ -154,7 +99,7 @@ std::string dumpLine(const Json& record, const std::string& what) {
     return record.dump();
   } catch (const Json::exception& error) {
     // A string that is not valid UTF-8 (the header's source or table).
-    throw std::invalid_argument(what + ": " + parseProblem(error.what()));
+    throw std::invalid_argument(what + ": " + jsonio::jsonProblem(error.what()));
   }
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "semslam/core/ExactNumber.h"
+#include "semslam/core/InputExcerpt.h"
 #include "semslam/io/MeasurementLogFile.h"
 
 namespace semslam {
@@ -54,7 +55,11 @@ namespace {
 
 constexpr double kProbabilitySumTolerance = 1e-6;
 constexpr double kQuaternionNormTolerance = 1e-6;
-constexpr long long kMaxClasses = 1000000;
+/// M x M confusion matrices are allocated from the declared class count before any detection is read: 2048
+/// classes are 32 MiB (docs/measurement-log.md, "Limits").
+constexpr long long kMaxClasses = 2048;
+/// A step holds at most this many detections (docs/measurement-log.md, "Limits").
+constexpr std::size_t kMaxDetectionsPerStep = 10000;
 
 template <class Enum, std::size_t N>
 Enum enumFromJson(const JsonField& field, const std::array<std::pair<Enum, std::string_view>, N>& names,
@@ -65,7 +70,7 @@ Enum enumFromJson(const JsonField& field, const std::array<std::pair<Enum, std::
     if (name == text) return kind;
     accepted += (accepted.empty() ? "" : ", ") + std::string(name);
   }
-  field.fail("unknown " + std::string(what) + " '" + text + "' (expected one of: " + accepted + ")");
+  field.fail("unknown " + std::string(what) + " " + inputExcerpt(text) + " (expected one of: " + accepted + ")");
 }
 
 // ---- poses and landmark states ----
@@ -589,6 +594,10 @@ TimeStep StepParser::parse(const JsonField& record) {
   }
   const JsonField detections = record["detections"];
   const std::size_t count = detections.arraySize();
+  if (count > kMaxDetectionsPerStep) {
+    detections.fail(std::to_string(count) + " detections in one step (at most " +
+                    std::to_string(kMaxDetectionsPerStep) + ")");
+  }
   step.detections.reserve(count);
   for (std::size_t i = 0; i < count; ++i) step.detections.push_back(parseDetection(detections.at(i)));
   if (record.has("true_pose")) step.truePose = poseFromJson(record["true_pose"], dimension);

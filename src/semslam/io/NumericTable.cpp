@@ -7,6 +7,8 @@
 #include <string_view>
 
 #include "semslam/core/InputError.h"
+#include "semslam/core/InputExcerpt.h"
+#include "semslam/core/InputFile.h"
 
 namespace semslam {
 
@@ -52,13 +54,13 @@ double parseNumber(std::string_view field, const std::string& path, std::size_t 
   double value = 0.0;
   const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
   if (error == std::errc::result_out_of_range) {
-    throw InputError(path, line, where + " '" + std::string(field) + "' is out of the range of a double");
+    throw InputError(path, line, where + " " + inputExcerpt(field) + " is out of the range of a double");
   }
   if (error != std::errc() || end != digits.data() + digits.size()) {
-    throw InputError(path, line, where + " '" + std::string(field) + "' is not a number");
+    throw InputError(path, line, where + " " + inputExcerpt(field) + " is not a number");
   }
   if (!std::isfinite(value)) {
-    throw InputError(path, line, where + " '" + std::string(field) + "' is not finite");
+    throw InputError(path, line, where + " " + inputExcerpt(field) + " is not finite");
   }
   return value;
 }
@@ -66,14 +68,11 @@ double parseNumber(std::string_view field, const std::string& path, std::size_t 
 }  // namespace
 
 std::vector<NumericRow> readNumericTable(const std::string& path, Separator separator) {
-  std::error_code ignored;
-  if (std::filesystem::is_directory(path, ignored)) throw InputError(path, 0, "is a directory, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, "cannot open file");
+  std::ifstream in = openInputFile(path);
   std::vector<NumericRow> rows;
   std::string text;
   std::size_t lineNumber = 0;
-  while (std::getline(in, text)) {
+  while (readBoundedLine(in, text, path, lineNumber + 1)) {
     ++lineNumber;
     std::string_view line = text;
     if (lineNumber == 1 && line.substr(0, 3) == "\xEF\xBB\xBF") line.remove_prefix(3);
@@ -87,7 +86,6 @@ std::vector<NumericRow> readNumericTable(const std::string& path, Separator sepa
     for (std::size_t i = 0; i < fields.size(); ++i) row.values.push_back(parseNumber(fields[i], path, lineNumber, i + 1));
     rows.push_back(std::move(row));
   }
-  if (in.bad()) throw InputError(path, lineNumber, "read error");
   return rows;
 }
 

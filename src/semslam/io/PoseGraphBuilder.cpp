@@ -1,6 +1,9 @@
 #include "semslam/io/PoseGraphBuilder.h"
 
+#include <cmath>
 #include <stdexcept>
+#include <type_traits>
+#include <variant>
 
 #include "semslam/core/InputError.h"
 
@@ -10,7 +13,45 @@ namespace {
 
 const char* dimensionName(int dimension) { return dimension == 3 ? "3D" : "2D"; }
 
+/// The squared norm of a vertex's position (0 for a rotation): infinite when its coordinates are too large to
+/// square, and every chi2 and gradient through it would overflow.
+double squaredPosition(const Value& value) {
+  return std::visit(
+      [](const auto& v) -> double {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, SE2> || std::is_same_v<T, SE3>) return v.translation().squaredNorm();
+        if constexpr (std::is_same_v<T, Point2> || std::is_same_v<T, Point3>) return v.squaredNorm();
+        return 0.0;
+      },
+      value);
+}
+
+bool finite(const LinearizedFactor& linearized) {
+  if (!std::isfinite(linearized.chi2) || !linearized.whitenedError.allFinite()) return false;
+  for (const Matrix& jacobian : linearized.jacobians) {
+    if (!jacobian.allFinite() || !(jacobian.transpose() * linearized.whitenedError).allFinite()) return false;
+  }
+  return true;
+}
+
 }  // namespace
+
+void PoseGraphBuilder::addFactor(FactorPtr factor) {
+  for (const Key key : factor->keys()) {
+    if (!file_.initial.exists(key)) {  // not placed yet: checked once the optimiser sees it
+      file_.factors.add(std::move(factor));
+      return;
+    }
+  }
+  LinearizedFactor linearized;
+  factor->linearize(file_.initial, linearized);
+  if (!finite(linearized)) {
+    reader_.fail(std::string(reader_.tag()) +
+                 ": the edge's error or gradient at the initial values overflows (not finite): a measurement, "
+                 "information entry or vertex is too large");
+  }
+  file_.factors.add(std::move(factor));
+}
 
 void PoseGraphBuilder::requireDimension(int dimension) {
   if (dimension_ == 0) {
@@ -28,6 +69,10 @@ void PoseGraphBuilder::addVertex(Key key, const Value& value) {
   const auto [it, inserted] = declaredAt_.emplace(key, reader_.lineNumber());
   if (!inserted) {
     reader_.fail("duplicate vertex " + keyToString(key) + ": already declared at line " + std::to_string(it->second));
+  }
+  if (!std::isfinite(squaredPosition(value))) {
+    reader_.fail("vertex " + keyToString(key) +
+                 ": coordinates too large (their squares overflow a double; every error through them would too)");
   }
   file_.initial.insert(key, value);
   if (!havePose_ && (std::holds_alternative<SE2>(value) || std::holds_alternative<SE3>(value))) {

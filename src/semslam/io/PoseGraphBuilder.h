@@ -3,8 +3,9 @@
 // and iSAM readers share. Every problem is thrown as InputError at the reader's current record:
 //   a vertex declared twice (naming the line of the first declaration), an edge or FIX naming a vertex not
 //   declared on an earlier line or of the wrong type, an edge from a vertex to itself, 2D and 3D records in one
-//   file, an information or square-root information matrix the noise model rejects, a file without records or
-//   without a pose.
+//   file, a vertex whose coordinates cannot be squared, an edge whose error or gradient at the initial values
+//   overflows, an information or square-root information matrix the noise model rejects, a file without records
+//   or without a pose.
 
 #include <string>
 #include <type_traits>
@@ -39,7 +40,9 @@ class PoseGraphBuilder {
   /// Fails unless the two vertices of an edge differ.
   void requireDistinct(Key from, Key to) const;
 
-  void addFactor(FactorPtr factor) { file_.factors.add(std::move(factor)); }
+  /// Adds the current record's factor; fails when its error, Jacobians or gradient at the initial values are not
+  /// finite (finite but huge numbers whose products overflow).
+  void addFactor(FactorPtr factor);
   /// Records a TORO equivalence between two declared, distinct vertices.
   void addEquivalence(Key first, Key second);
   /// Adds a FIX vertex (which must be declared); a vertex fixed twice is listed once.

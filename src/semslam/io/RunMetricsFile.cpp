@@ -6,9 +6,12 @@
 #include <sstream>
 #include <variant>
 
-#include "semslam/io/AtomicFile.h"
 #include "semslam/core/InputError.h"
+#include "semslam/core/InputExcerpt.h"
+#include "semslam/core/InputFile.h"
+#include "semslam/core/JsonNesting.h"
 #include "semslam/core/Version.h"
+#include "semslam/io/AtomicFile.h"
 
 namespace semslam {
 namespace {
@@ -147,9 +150,10 @@ std::string runMetricsToJson(const RunMetrics& metrics) {
 RunMetrics runMetricsFromJson(const std::string& text, const std::string& source) {
   Json json;
   try {
+    requireJsonNestingAtMost(text, source, 1);
     json = Json::parse(text);
   } catch (const Json::parse_error& error) {
-    throw InputError(source, 0, std::string("not valid JSON: ") + error.what());
+    throw InputError(source, 0, "not valid JSON: " + boundedMessage(error.what(), 200));
   }
   if (!json.is_object()) throw InputError(source, 0, "metrics.json must hold one JSON object");
   const auto schema = json.find("schema");
@@ -171,11 +175,7 @@ void writeRunMetrics(const std::string& path, const RunMetrics& metrics) {
 }
 
 RunMetrics readRunMetrics(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, "cannot open the file");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return runMetricsFromJson(buffer.str(), path);
+  return runMetricsFromJson(readInputText(path), path);
 }
 
 }  // namespace semslam

@@ -1,16 +1,15 @@
 #include "semslam/io/ScenarioFile.h"
 
 #include <algorithm>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <utility>
 #include <vector>
 
-#include "semslam/io/AtomicFile.h"
 #include "semslam/core/InputError.h"
+#include "semslam/core/InputFile.h"
+#include "semslam/io/AtomicFile.h"
 #include "semslam/io/JsonField.h"
+#include "semslam/io/StrictJson.h"
 
 namespace semslam {
 
@@ -21,55 +20,6 @@ using jsonio::JsonLocation;
 namespace {
 
 // ---- reading ----
-
-std::size_t lineOfByte(const std::string& text, std::size_t byte) {
-  const std::size_t end = std::min(byte, text.size());
-  return 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<long>(end), '\n'));
-}
-
-/// nlohmann's message without its "[json.exception.parse_error.101] parse error at line L, column C: " prefix.
-std::string parseProblem(const std::string& what) {
-  std::string text = what;
-  if (text.rfind("[json.exception.", 0) == 0) {
-    const auto end = text.find("] ");
-    if (end != std::string::npos) text = text.substr(end + 2);
-  }
-  if (text.rfind("parse error", 0) == 0) {
-    const auto colon = text.find(": ");
-    if (colon != std::string::npos) text = text.substr(colon + 2);
-  }
-  return text;
-}
-
-Json parseJson(const std::string& text, const std::string& file) {
-  std::vector<std::vector<std::string>> keys;  // the keys seen so far in each open object
-  std::string duplicate;
-  const Json::parser_callback_t callback = [&keys, &duplicate](int, Json::parse_event_t event, Json& parsed) {
-    if (event == Json::parse_event_t::object_start) {
-      keys.emplace_back();
-    } else if (event == Json::parse_event_t::key) {
-      std::string key = parsed.get<std::string>();
-      if (duplicate.empty() && std::find(keys.back().begin(), keys.back().end(), key) != keys.back().end()) {
-        duplicate = key;
-      }
-      keys.back().push_back(std::move(key));
-    } else if (event == Json::parse_event_t::object_end) {
-      keys.pop_back();
-    }
-    return true;
-  };
-  Json json;
-  try {
-    json = Json::parse(text, callback);
-  } catch (const Json::parse_error& error) {
-    throw InputError(file, lineOfByte(text, error.byte == 0 ? 0 : error.byte - 1),
-                     "not valid JSON: " + parseProblem(error.what()));
-  } catch (const Json::exception& error) {
-    throw InputError(file, 0, "not valid JSON: " + parseProblem(error.what()));
-  }
-  if (!duplicate.empty()) throw InputError(file, 0, "duplicate key '" + duplicate + "' (every key appears once)");
-  return json;
-}
 
 SE2 poseFrom(const JsonField& field) {
   const Vector v = field.vector(3, "[x, y, theta]");
@@ -161,7 +111,7 @@ Json matrixJson(const M& m) {
 }  // namespace
 
 Aliased2dScenario parseAliased2dScenario(const std::string& text, const std::string& file) {
-  const Json json = parseJson(text, file);
+  const Json json = jsonio::parseStrictJson(text, file, 1);
   const JsonLocation location{file, 0};
   const JsonField root(json, location);
   root.requireObject({"format", "version", "kind", "objects", "start", "motion"},
@@ -216,13 +166,7 @@ Aliased2dScenario parseAliased2dScenario(const std::string& text, const std::str
 }
 
 Aliased2dScenario readAliased2dScenario(const std::string& path) {
-  if (std::filesystem::is_directory(path)) throw InputError(path, 0, "is a directory, not a scenario file");
-  std::ifstream stream(path, std::ios::binary);
-  if (!stream) throw InputError(path, 0, "cannot open the scenario file");
-  std::ostringstream contents;
-  contents << stream.rdbuf();
-  if (stream.bad()) throw InputError(path, 0, "read error");
-  const std::string text = contents.str();
+  const std::string text = readInputText(path);
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError(path, 0, "the file is empty");
   return parseAliased2dScenario(text, path);
 }

@@ -1,9 +1,12 @@
 #include "semslam/io/TrajectoryErrorReport.h"
 
+#include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <utility>
 
+#include "semslam/core/InputError.h"
 #include "semslam/core/Version.h"
 
 namespace semslam {
@@ -47,13 +50,40 @@ bool scaled(const EvaluationOptions& options) {
   return options.alignment == AlignmentMode::Sim3 || options.alignment == AlignmentMode::Scale;
 }
 
+bool finiteStatistics(const ErrorStatistics& s) {
+  return std::isfinite(s.max) && std::isfinite(s.mean) && std::isfinite(s.median) && std::isfinite(s.min) &&
+         std::isfinite(s.rmse) && std::isfinite(s.sse) && std::isfinite(s.std);
+}
+
+/// The pose of `trajectory` with the largest coordinate (in magnitude), and that magnitude.
+std::pair<std::size_t, double> largestCoordinate(const Trajectory& trajectory) {
+  std::pair<std::size_t, double> largest{0, 0.0};
+  for (std::size_t k = 0; k < trajectory.size(); ++k) {
+    const double magnitude = trajectory.position(k).cwiseAbs().maxCoeff();
+    if (magnitude > largest.second) largest = {k, magnitude};
+  }
+  return largest;
+}
+
 }  // namespace
 
 EvaluationResult evaluateTrajectoryFiles(const TrajectoryErrorRequest& request) {
   const Trajectory reference = readTrajectory(request.reference, request.referenceFormat);
   const Trajectory estimate = readTrajectory(request.estimate, request.estimateFormat);
-  return request.relative ? evaluateRelativePoseError(reference, estimate, request.options)
-                          : evaluateAbsolutePoseError(reference, estimate, request.options);
+  EvaluationResult result = request.relative ? evaluateRelativePoseError(reference, estimate, request.options)
+                                             : evaluateAbsolutePoseError(reference, estimate, request.options);
+  if (!finiteStatistics(result.statistics)) {
+    // Finite coordinates whose squares or sums overflow (a TUM coordinate of 1e308): the input's doing.
+    const auto [estimatePose, estimateMagnitude] = largestCoordinate(estimate);
+    const auto [referencePose, referenceMagnitude] = largestCoordinate(reference);
+    const bool estimateLarger = estimateMagnitude >= referenceMagnitude;
+    std::ostringstream problem;
+    problem << "the error statistics overflow (not finite): the coordinates are too large; the largest, "
+            << (estimateLarger ? estimateMagnitude : referenceMagnitude) << ", is in pose "
+            << (estimateLarger ? estimatePose : referencePose) << " (0-based) of this file";
+    throw InputError(estimateLarger ? request.estimate : request.reference, 0, problem.str());
+  }
+  return result;
 }
 
 std::string trajectoryErrorText(const TrajectoryErrorRequest& request, const EvaluationResult& result) {

@@ -21,7 +21,8 @@ struct TrajectoryErrorRequest {
   EvaluationOptions options;
 };
 
-/// Reads both files and evaluates; throws InputError for a bad file.
+/// Reads both files and evaluates; throws InputError for a bad file, and for statistics that overflow (finite but
+/// huge coordinates: the file with the largest one is named, with the pose).
 EvaluationResult evaluateTrajectoryFiles(const TrajectoryErrorRequest& request);
 
 /// evo's text (pretty_str) and the counts line, newline-terminated.

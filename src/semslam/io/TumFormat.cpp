@@ -5,6 +5,7 @@
 
 #include "semslam/io/TrajectoryTable.h"
 #include "semslam/core/ExactNumber.h"
+#include "semslam/io/AtomicFile.h"
 #include "semslam/core/InputError.h"
 
 namespace semslam {
@@ -26,16 +27,15 @@ Trajectory readTumTrajectory(const std::string& path) {
 }
 
 void writeTumTrajectory(const std::string& path, const Trajectory& trajectory) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write " + path);
-  for (std::size_t i = 0; i < trajectory.size(); ++i) {
-    const Vector3& t = trajectory.position(i);
-    const Eigen::Quaterniond q = trajectory.pose(i).rotation().toQuaternion();
-    out << shortestExactNumber(trajectory.timestamp(i)) << ' ' << shortestExactNumber(t.x()) << ' ' << shortestExactNumber(t.y()) << ' '
-        << shortestExactNumber(t.z()) << ' ' << shortestExactNumber(q.x()) << ' ' << shortestExactNumber(q.y()) << ' '
-        << shortestExactNumber(q.z()) << ' ' << shortestExactNumber(q.w()) << '\n';
-  }
-  if (!out) throw std::runtime_error("error writing " + path);
+  writeFileAtomically(path, [&](std::ostream& out) {
+    for (std::size_t i = 0; i < trajectory.size(); ++i) {
+      const Vector3& t = trajectory.position(i);
+      const Eigen::Quaterniond q = trajectory.pose(i).rotation().toQuaternion();
+      out << shortestExactNumber(trajectory.timestamp(i)) << ' ' << shortestExactNumber(t.x()) << ' ' << shortestExactNumber(t.y()) << ' '
+          << shortestExactNumber(t.z()) << ' ' << shortestExactNumber(q.x()) << ' ' << shortestExactNumber(q.y()) << ' '
+          << shortestExactNumber(q.z()) << ' ' << shortestExactNumber(q.w()) << '\n';
+    }
+  });
 }
 
 }  // namespace semslam

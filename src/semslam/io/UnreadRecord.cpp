@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "semslam/core/InputExcerpt.h"
+
 namespace semslam {
 namespace {
 

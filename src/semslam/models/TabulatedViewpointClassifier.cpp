@@ -10,6 +10,9 @@
 #include <stdexcept>
 
 #include "semslam/core/InputError.h"
+#include "semslam/core/InputExcerpt.h"
+#include "semslam/core/InputFile.h"
+#include "semslam/core/JsonNesting.h"
 
 namespace semslam {
 
@@ -176,9 +179,10 @@ TabulatedViewpointClassifier TabulatedViewpointClassifier::fromJson(const std::s
                                                                     const std::string& source) {
   Json root;
   try {
+    requireJsonNestingAtMost(text, source, 1);
     root = Json::parse(text);
   } catch (const Json::parse_error& error) {
-    throw InputError(source, 0, std::string("not valid JSON: ") + error.what());
+    throw InputError(source, 0, "not valid JSON: " + boundedMessage(error.what(), 200));
   }
   std::vector<ViewpointTable> tables;
   try {
@@ -191,12 +195,7 @@ TabulatedViewpointClassifier TabulatedViewpointClassifier::fromJson(const std::s
 }
 
 TabulatedViewpointClassifier TabulatedViewpointClassifier::load(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string(), 0, "cannot open the viewpoint classifier table");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(file.string(), 0, "cannot read the viewpoint classifier table");
-  return fromJson(text.str(), file.string());
+  return fromJson(readInputText(file.string()), file.string());
 }
 
 TabulatedViewpointClassifier TabulatedViewpointClassifier::tabulate(const ViewpointClassifierModel& model,

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <sstream>
+#include <type_traits>
+#include <variant>
 
 #include "semslam/core/InputError.h"
 #include "semslam/io/PoseGraphAnchor.h"
@@ -93,6 +96,39 @@ void replayIncrementally(const PoseGraphOptimizationOptions& options, const Pose
   report.replay = std::move(statistics);
 }
 
+bool finiteValues(const Values& values) {
+  for (const auto& [key, value] : values) {
+    const bool finite = std::visit(
+        [](const auto& v) {
+          using T = std::decay_t<decltype(v)>;
+          if constexpr (std::is_same_v<T, Point2> || std::is_same_v<T, Point3>) {
+            return v.allFinite();
+          } else {
+            return v.matrix().allFinite();
+          }
+        },
+        value);
+    if (!finite) return false;
+  }
+  return true;
+}
+
+/// A result with a non-finite chi2, gradient or estimate is never reported as a success: the file's numbers
+/// (finite, but huge enough that products overflow) caused it.
+void requireFiniteResult(const PoseGraphOptimizationReport& report) {
+  const OptimizationResult& r = report.result;
+  std::string what;
+  if (!std::isfinite(report.initialChi2) || !std::isfinite(r.initialChi2)) what = "the initial chi2";
+  else if (!std::isfinite(r.initialGradientNorm)) what = "the initial gradient";
+  else if (!std::isfinite(report.finalChi2) || !std::isfinite(r.finalChi2)) what = "the final chi2";
+  else if (!std::isfinite(r.finalGradientNorm)) what = "the final gradient";
+  else if (!finiteValues(report.estimate)) what = "the estimate";
+  if (what.empty()) return;
+  throw InputError(report.file, 0,
+                   what + " is not finite: the file's measurements, information entries or vertices are too large "
+                          "(their products overflow a double)");
+}
+
 }  // namespace
 
 const char* const kPoseGraphGaugeHint =
@@ -111,6 +147,14 @@ PoseGraphOptimizationReport optimizePoseGraphFile(const PoseGraphOptimizationOpt
                                                                        : "gn";
   report.variables = file.initial.size();
   report.edges = file.factors.size();
+  // chi2 over the file's own edges (the anchoring prior excluded); every edge's is finite (io/PoseGraphBuilder.h),
+  // their sum may not be.
+  report.initialChi2 = file.factors.chi2(file.initial);
+  if (!std::isfinite(report.initialChi2)) {
+    throw InputError(options.file, 0,
+                     "the chi2 at the initial values is not finite: the file's measurements, information entries "
+                     "or vertices are too large (their products overflow a double)");
+  }
   try {
     if (options.incremental) {
       replayIncrementally(options, file, marginalKeys, report);
@@ -120,11 +164,10 @@ PoseGraphOptimizationReport optimizePoseGraphFile(const PoseGraphOptimizationOpt
   } catch (const UnconstrainedSystemError& error) {  // the file's graph leaves something free: its author can fix it
     throw InputError(options.file, 0, std::string(error.what()) + " " + kPoseGraphGaugeHint);
   }
-  // chi2 over the file's own edges (the anchoring prior excluded).
-  report.initialChi2 = file.factors.chi2(file.initial);
   report.finalChi2 = file.factors.chi2(report.estimate);
   report.fixed = file.fixed;
   report.graph = file.factors;
+  requireFiniteResult(report);
   return report;
 }
 

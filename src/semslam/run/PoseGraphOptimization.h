@@ -31,7 +31,8 @@ struct PoseGraphOptimizationOptions {
   std::function<void(int done, int total)> progress;
 };
 
-/// Throws InputError for an unreadable file or a bad --marginals id list.
+/// Throws InputError for an unreadable file, a bad --marginals id list, and a result with a non-finite chi2,
+/// gradient or estimate (never reported as a success: the file's numbers are too large).
 PoseGraphOptimizationReport optimizePoseGraphFile(const PoseGraphOptimizationOptions& options);
 
 }  // namespace semslam

@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 #include <cmath>
+#include <charconv>
 #include <numbers>
 #include <set>
 #include <stdexcept>
@@ -30,7 +31,12 @@ M diagonal(std::initializer_list<double> values) {
   throw std::invalid_argument(field + ": " + problem);
 }
 
-std::string text(double value) { return std::to_string(value); }
+/// The value in the shortest form that reads back ("1e-09", not to_string's "0.000000").
+std::string text(double value) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, result.ptr);
+}
 
 void checkFinite(const std::string& field, double value) {
   if (!std::isfinite(value)) fail(field, "must be a finite number");
@@ -159,6 +165,16 @@ void validateAliased2dScenario(const Aliased2dScenario& scenario) {
   if (!(motion.arenaRadius > 0.0)) fail("motion.arena.radius", "must be positive, found " + text(motion.arenaRadius));
   checkFinite("motion.clearance", motion.clearance);
   if (motion.clearance < 0.0) fail("motion.clearance", "must be >= 0, found " + text(motion.clearance));
+  // Values the motion model could only ignore: an arena smaller than one step is overstepped every step, and
+  // no pose inside an arena keeps a clearance as wide as the arena.
+  if (motion.arenaRadius < motion.stepLength) {
+    fail("motion.arena.radius", "must be at least motion.step_length (" + text(motion.stepLength) + "), found " +
+                                    text(motion.arenaRadius));
+  }
+  if (motion.clearance >= motion.arenaRadius) {
+    fail("motion.clearance", "must be below motion.arena.radius (" + text(motion.arenaRadius) + "), found " +
+                                 text(motion.clearance));
+  }
   checkFinite("motion.time_step", motion.timeStep);
   if (!(motion.timeStep > 0.0)) fail("motion.time_step", "must be positive, found " + text(motion.timeStep));
 

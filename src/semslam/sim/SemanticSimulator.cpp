@@ -74,7 +74,11 @@ std::vector<Landmark> placeLandmarks(const std::vector<PoseT>& poses, const Sema
   using T = Traits<PoseT>;
   int count = options.landmarks;
   if (count == 0 && options.landmarkDensity > 0.0) {
-    count = std::max(1, static_cast<int>(std::lround(options.landmarkDensity * pathLength)));
+    const double fromDensity = std::round(options.landmarkDensity * pathLength);
+    check(fromDensity <= kMaxSimulatedLandmarks,
+          "the landmark density times the path length gives more than " + std::to_string(kMaxSimulatedLandmarks) +
+              " landmarks");
+    count = std::max(1, static_cast<int>(fromDensity));
   }
   std::vector<double> cumulative(poses.size(), 0.0);
   for (std::size_t i = 1; i < poses.size(); ++i) {
@@ -235,7 +239,8 @@ Matrix baselineOdometryCovariance(int dimension) {
 
 void validateSemanticSimOptions(const SemanticSimOptions& o) {
   check(o.classes >= 1, "classes must be >= 1");
-  check(o.landmarks >= 0, "the number of landmarks must be >= 0");
+  check(o.landmarks >= 0 && o.landmarks <= kMaxSimulatedLandmarks,
+        "the number of landmarks must be in [0, " + std::to_string(kMaxSimulatedLandmarks) + "]");
   check(finite(o.landmarkDensity) && o.landmarkDensity >= 0.0, "the landmark density must be >= 0");
   check(finite(o.minOffset) && finite(o.maxOffset) && o.minOffset >= 0.0 && o.minOffset <= o.maxOffset,
         "the landmark offsets must satisfy 0 <= min <= max");

@@ -63,9 +63,12 @@ struct SemanticSimOptions {
 ///   3D: diag(0.02², 0.01², 0.01², 0.002², 0.002², 0.005²)   (x, y, z in m; roll, pitch, yaw rotation in rad)
 Matrix baselineOdometryCovariance(int dimension);
 
-/// Throws std::invalid_argument naming the first invalid option: classes ≥ 1; landmarks ≥ 0; density ≥ 0;
-/// 0 ≤ minOffset ≤ maxOffset; minHeight ≤ maxHeight; maxRange ≥ 0; fieldOfView in [0, 2π]; sigmas > 0;
-/// detectionProbability in [0, 1]; misclassification in [0, 1) and 0 when M = 1; odomNoiseScale ≥ 0;
+/// The most landmarks a run places (given, or from the density): the simulator holds them all.
+inline constexpr int kMaxSimulatedLandmarks = 1000000;
+
+/// Throws std::invalid_argument naming the first invalid option: classes ≥ 1; landmarks in
+/// [0, kMaxSimulatedLandmarks]; density ≥ 0; 0 ≤ minOffset ≤ maxOffset; minHeight ≤ maxHeight; maxRange ≥ 0;
+/// fieldOfView in [0, 2π]; sigmas > 0; detectionProbability in [0, 1]; misclassification in [0, 1) and 0 when M = 1; odomNoiseScale ≥ 0;
 /// odomCovarianceScale > 0; clutter in [0, 100] and, when positive, a positive maxRange; all finite.
 void validateSemanticSimOptions(const SemanticSimOptions& options);
 

@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "semslam/core/InputError.h"
+#include "semslam/core/InputExcerpt.h"
 #include "semslam/io/LineReader.h"
 #include "semslam/io/TriangularEntries.h"
 #include "semslam/io/convert/ConversionCommon.h"
@@ -81,8 +82,8 @@ MeasurementLog convertIsam(const std::string& path, const ConvertOptions& option
       detection.truthId = l;
       raw.steps[static_cast<std::size_t>(i)].detections.push_back(std::move(detection));
     } else {
-      reader.fail("unsupported record type '" + std::string(tag) +
-                  "' (the iSAM landmark converter reads EDGE2, ODOMETRY and LANDMARK)");
+      reader.fail("unsupported record type " + inputExcerpt(tag) +
+                  " (the iSAM landmark converter reads EDGE2, ODOMETRY and LANDMARK)");
     }
   }
 

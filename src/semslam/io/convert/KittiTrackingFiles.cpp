@@ -7,6 +7,8 @@
 #include <sstream>
 
 #include "semslam/core/InputError.h"
+#include "semslam/core/InputFile.h"
+#include "semslam/core/InputExcerpt.h"
 #include "semslam/io/KittiFormat.h"
 #include "semslam/io/NumericTable.h"
 #include "semslam/io/convert/ConversionCommon.h"
@@ -34,8 +36,8 @@ KittiLabelType parseLabelType(const std::string& path, std::size_t line, const s
     if (text == name) return type;
   }
   throw InputError(path, line,
-                   "unknown label type '" + text +
-                       "' (expected Car, Van, Truck, Pedestrian, Person_sitting, Cyclist, Tram, Misc or DontCare)");
+                   "unknown label type " + inputExcerpt(text) +
+                       " (expected Car, Van, Truck, Pedestrian, Person_sitting, Cyclist, Tram, Misc or DontCare)");
 }
 
 double parseNumber(const std::string& path, std::size_t line, const std::string& text, const char* name) {
@@ -43,7 +45,7 @@ double parseNumber(const std::string& path, std::size_t line, const std::string&
   const char* end = text.data() + text.size();
   const auto [ptr, ec] = std::from_chars(text.data(), end, value);
   if (ec != std::errc() || ptr != end || !std::isfinite(value)) {
-    throw InputError(path, line, std::string(name) + ": '" + text + "' is not a finite number");
+    throw InputError(path, line, std::string(name) + ": " + inputExcerpt(text) + " is not a finite number");
   }
   return value;
 }
@@ -71,8 +73,7 @@ int frameField(const std::string& path, std::size_t line, double value, int prev
 }
 
 std::vector<KittiLabel> readLabels(const std::string& path, std::size_t poses, const std::string& posePath) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, "cannot open the label file");
+  std::ifstream in = openInputFile(path);
   std::vector<KittiLabel> labels;
   std::string text;
   std::size_t line = 0;
@@ -80,7 +81,7 @@ std::vector<KittiLabel> readLabels(const std::string& path, std::size_t poses, c
   static const char* const kNames[kLabelFields] = {"frame", "track_id", "type",  "truncated", "occluded", "alpha",
                                                    "x1",    "y1",       "x2",    "y2",        "h",        "w",
                                                    "l",     "X",        "Y",     "Z",         "rotation_y"};
-  while (std::getline(in, text)) {
+  while (readBoundedLine(in, text, path, line + 1)) {
     ++line;
     if (!text.empty() && text.back() == '\r') text.pop_back();
     std::istringstream fields(text);
