@@ -159,14 +159,14 @@ def hybrid_section(semslam, data, scratch, python):
                             ("four bays", "sampled"), ("four bays", "importance")):
         out = os.path.join(scratch, "hybrid-" + weights + ("-four-bays" if layout == "four bays" else ""))
         command = [semslam, "study", "hybrid"] + (["--scenario", four_bays] if layout == "four bays" else []) + [
-            "--tracks", "50", "--steps", "10", "--alpha", "0.25", "--weights", weights, "--out", out]
+            "--tracks", "50", "--steps", "10", "--alpha", "0.25", "--weights", weights, "--out", out, "--overwrite"]
         studies.append((layout, weights, shown(command, data).replace(out, "DIR"), out,
                         run(command).strip().replace(out, "DIR")))
     sweeps = {}
     for weights in ("sampled", "importance"):
         sweep = os.path.join(scratch, "hybrid-sweep-" + weights)
         sweep_command = [semslam, "study", "hybrid", "--tracks", "50", "--steps", "10", "--weights", weights,
-                         "--out", sweep]
+                         "--out", sweep, "--overwrite"]
         sweeps[weights] = (sweep, sweep_command, run(sweep_command).strip())
     for layout, weights, command, out, output in studies:
         a = plot_hybrid.analyze(out, 0.25)

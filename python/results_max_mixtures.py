@@ -230,7 +230,7 @@ def robustness_sections(semslam, data, scratch, shown):
             out = os.path.join("docs", "results", "robustness", name + suffix)
             os.makedirs(out, exist_ok=True)
             study = [semslam, "study", "robustness", "--log", log, "--max-steps", str(steps), "--out", out,
-                     "--birth", rule] + ROBUSTNESS_STUDY
+                     "--overwrite", "--birth", rule] + ROBUSTNESS_STUDY
             summary = run_checked(study).strip()
             plot = [sys.executable, os.path.join(HERE, "plot_robustness.py"), out, "--metrics",
                     "ate_rmse,rot_rmse,da_accuracy,da_accuracy_real"]

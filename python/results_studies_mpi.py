@@ -47,7 +47,7 @@ def _environment(extra):
 
 def _command(semslam, log, out, ranks, threads):
     return (_mpirun(ranks) if ranks else []) + [semslam, "study", "robustness", "--log", log] + STUDY + [
-        "--threads", str(threads), "--out", out]
+        "--threads", str(threads), "--out", out, "--overwrite"]
 
 
 def _timed(command, extra):

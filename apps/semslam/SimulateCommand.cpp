@@ -102,7 +102,7 @@ void addAliased(CLI::App& simulate) {
   command
       ->add_option("--layout-seed", options->layoutSeed,
                    "a generated layout instead (six objects in three translated pairs; docs/simulators.md)")
-      ->check(kSeedValidator)
+      ->check(unsignedInteger64())
       ->excludes(scenario);
   command->add_option("--tracks", options->tracks, "number of ground-truth tracks")
       ->check(CLI::Range(1, 100000))

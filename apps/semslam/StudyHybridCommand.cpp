@@ -4,16 +4,20 @@
 
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "Commands.h"
 #include "DistributedRuns.h"
 #include "MethodOptions.h"
+#include "OptionValidators.h"
+#include "semslam/core/InputError.h"
+#include "semslam/core/ProgressBar.h"
+#include "semslam/io/OutputTarget.h"
+#include "semslam/io/ScenarioFile.h"
+#include "semslam/io/StagedFolder.h"
 #include "semslam/study/HybridStudy.h"
 #include "semslam/study/StudyRowBytes.h"
-#include "semslam/core/InputError.h"
-#include "semslam/io/ScenarioFile.h"
-#include "semslam/core/ProgressBar.h"
 
 namespace semslam::cli {
 namespace {
@@ -21,6 +25,7 @@ namespace {
 struct StudyHybridArguments {
   std::string scenario;  ///< a scenario file; empty: the built-in layout
   std::string out;
+  bool overwrite = false;
   bool quiet = false;
   HybridStudyOptions options;
 };
@@ -37,6 +42,13 @@ void runStudy(StudyHybridArguments arguments) {
   } catch (const std::invalid_argument& error) {
     throw InputError(error.what());
   }
+  // The rank that writes checks and stages the folder before the work and renames it into place whole after it
+  // (io/StagedFolder.h); under mpirun a refusal there ends the job.
+  std::optional<StagedFolder> folder;
+  if (isGatheringRank()) {
+    if (!arguments.scenario.empty()) requireOutputSparesInput(arguments.out, arguments.scenario, "--out");
+    folder.emplace(arguments.out, arguments.overwrite);
+  }
   // Only the rank that writes draws progress (a helper rank's bar is never drawn).
   ProgressBar progress("study hybrid", static_cast<int>(runs.size()), arguments.quiet || !isGatheringRank());
   const DistributedResults distributed = runDistributed(
@@ -46,7 +58,8 @@ void runStudy(StudyHybridArguments arguments) {
   if (!distributed.gathered) return;
   std::vector<HybridStudyRow> rows;
   for (const std::string& bytes : distributed.results) rows.push_back(decodeHybridStudyRow(bytes));
-  writeHybridStudy(arguments.out, rows, distributed.layout);
+  writeHybridStudy(folder->path(), rows, distributed.layout);
+  folder->commit();
   for (std::size_t i = 0; i < rows.size(); ++i) {
     if (!rows[i].error.empty() && !arguments.quiet) {
       std::fprintf(stderr, "semslam: warning: run %zu (alpha %g, track %d, %s) failed: %s\n", i, rows[i].alpha,
@@ -73,10 +86,11 @@ void addStudyHybridCommand(CLI::App& study) {
   hybrid->add_option("--alpha", o.alphas, "classifier viewpoint dependencies, comma separated")
       ->delimiter(',')
       ->capture_default_str();
-  hybrid->add_option("--seed", o.seed, "seed of tracks and draws")->capture_default_str();
+  hybrid->add_option("--seed", o.seed, "seed of tracks and draws")->check(unsignedInteger64())->capture_default_str();
   addHybridOptions(hybrid, o.hybrid);
   hybrid->add_option("--threads", o.threads, "worker threads")->check(CLI::Range(1, 64))->capture_default_str();
   hybrid->add_option("--out", arguments->out, "output folder")->required();
+  hybrid->add_flag("--overwrite", arguments->overwrite, "replace an existing non-empty --out folder whole");
   hybrid->add_flag("--quiet", arguments->quiet, "no progress line");
   hybrid->callback([arguments] { runStudy(*arguments); });
 }

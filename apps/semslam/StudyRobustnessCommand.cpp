@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -21,9 +22,12 @@
 #include "Commands.h"
 #include "DistributedRuns.h"
 #include "MethodOptions.h"
+#include "OptionValidators.h"
 #include "semslam/core/InputError.h"
 #include "semslam/core/ProgressBar.h"
 #include "semslam/io/MeasurementLogFile.h"
+#include "semslam/io/OutputTarget.h"
+#include "semslam/io/StagedFolder.h"
 #include "semslam/solve/SmootherFactory.h"
 #include "semslam/study/RobustnessStudy.h"
 #include "semslam/study/RobustnessStudyFolder.h"
@@ -36,6 +40,7 @@ namespace {
 struct RobustnessArguments {
   std::string log;
   std::string out;
+  bool overwrite = false;
   std::string methods = "known,ml,gpda,mm,mm-nh";
   std::string noiseScales = "0,1,2,5,10";
   std::string rates = "0,0.1,0.2,0.3,0.5";
@@ -111,6 +116,13 @@ void runRobustness(const RobustnessArguments& arguments) {
     throw InputError(error.what());
   }
 
+  // The rank that writes checks and stages the folder before the work and renames it into place whole after it
+  // (io/StagedFolder.h); under mpirun a refusal there ends the job.
+  std::optional<StagedFolder> folder;
+  if (isGatheringRank()) {
+    requireOutputSparesInput(arguments.out, arguments.log, "--out");
+    folder.emplace(arguments.out, arguments.overwrite);
+  }
   const MeasurementLog log = readMeasurementLog(arguments.log);
   const std::vector<RobustnessCell> cells = robustnessCells(options);
   const int methods = static_cast<int>(options.methods.size());
@@ -133,7 +145,8 @@ void runRobustness(const RobustnessArguments& arguments) {
     for (RobustnessRow& row : decodeRobustnessRows(bytes)) study.rows.push_back(std::move(row));
   }
 
-  writeRobustnessStudyFolder(arguments.out, study, options, {arguments.log, arguments.methods, arguments.smoother});
+  writeRobustnessStudyFolder(folder->path(), study, options, {arguments.log, arguments.methods, arguments.smoother});
+  folder->commit();
   const int failed = failedRobustnessRuns(study.rows);
   int warned = 0;
   for (std::size_t i = 0; i < study.rows.size(); ++i) {
@@ -157,6 +170,7 @@ void addStudyRobustnessCommand(CLI::App& study) {
   command->add_option("--log", a->log, "measurement log (docs/measurement-log.md)")->required()->check(
       CLI::ExistingFile);
   command->add_option("--out", a->out, "output folder")->required();
+  command->add_flag("--overwrite", a->overwrite, "replace an existing non-empty --out folder whole");
   command->add_option("--methods", a->methods, "comma-separated: known, ml, gpda, mm, mm-nh")->capture_default_str();
   command->add_option("--odom-noise-scale", a->noiseScales,
                       "comma-separated odometry noise scales (x 0.02 m, 0.02 m, 0.01 rad per second)")
@@ -165,6 +179,7 @@ void addStudyRobustnessCommand(CLI::App& study) {
       ->capture_default_str();
   command->add_option("--seeds", a->seeds, "seeds per level")->check(CLI::Range(1, 1000000))->capture_default_str();
   command->add_option("--seed", a->baseSeed, "first perturbation seed (seeds are seed .. seed + seeds - 1)")
+      ->check(unsignedInteger64())
       ->capture_default_str();
   command->add_option("--threads", a->threads, "worker threads")->check(CLI::Range(1, 256))->capture_default_str();
   command->add_option("--max-steps", a->maxSteps, "use only the log's first N steps (0: all)")

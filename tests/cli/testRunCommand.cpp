@@ -183,6 +183,28 @@ TEST(StudyCommand, SmallHybridStudyWritesSummary) {
   fs::remove_all(dir);
 }
 
+TEST(StudyCommand, AStudyRefusesAFullFolderUnlessOverwriteWhichReplacesItWhole) {
+  const fs::path dir = freshDirectory("semslam_study_overwrite");
+  const std::string study = "study hybrid --tracks 1 --steps 2 --alpha 0.25 --samples 20 --quiet --out \"" +
+                            (dir / "study").string() + "\"";
+  ASSERT_EQ(runSemslam(study).exitCode, 0);
+  const auto again = runSemslam(study);
+  EXPECT_EQ(again.exitCode, 2) << again.output;
+  EXPECT_NE(again.output.find("--overwrite"), std::string::npos) << again.output;
+  std::ofstream(dir / "study" / "stale.txt") << "from an earlier study\n";
+  ASSERT_EQ(runSemslam(study + " --overwrite").exitCode, 0);
+  EXPECT_FALSE(fs::exists(dir / "study" / "stale.txt"));
+  EXPECT_TRUE(fs::exists(dir / "study" / "summary.csv"));
+  // A robustness study never writes over its log.
+  const fs::path log = dir / "log.jsonl";
+  ASSERT_EQ(runSemslam("simulate semantic --steps 5 --seed 1 --out \"" + log.string() + "\"").exitCode, 0);
+  const auto ontoLog = runSemslam("study robustness --log \"" + log.string() + "\" --methods known --seeds 1 " +
+                                  "--odom-noise-scale 1 --misclassification 0 --quiet --out \"" + log.string() + "\"");
+  EXPECT_EQ(ontoLog.exitCode, 2) << ontoLog.output;
+  EXPECT_TRUE(fs::is_regular_file(log));
+  fs::remove_all(dir);
+}
+
 TEST(RunCommand, EveryMethodShowsProgressUnlessQuiet) {
   const fs::path dir = freshDirectory("semslam_run_progress");
   const fs::path log = dir / "run.jsonl";
