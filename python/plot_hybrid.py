@@ -8,10 +8,12 @@
       history, blue without, red with, the true history circled green. The run folders are those of
       `semslam run --method hybrid|hybrid-geometric` on the same log.
   plot_hybrid.py fig5 STUDY_DIR [--out docs/figures/hybrid_fig5.png]
-      The analog of Fig. 5: the four metrics at the final step against alpha, mean over tracks with 95 % intervals.
-  plot_hybrid.py analyze STUDY_DIR [--alpha 0.25] [--json]
-      Paired differences (classifier - geometric) with 95 % t intervals, the paired slope of the entropy against
-      alpha, the pooled NEES and the disambiguation fractions.
+      The analog of Fig. 5: the four metrics at the final step against alpha, mean over layouts and tracks with the
+      stratified bootstrap 95 % interval of the mean (det Sigma on a log axis).
+  plot_hybrid.py analyze STUDY_DIR [--alpha 0.25]
+      Paired differences (classifier - geometric) per layout and pooled: stratified paired bootstrap 95 % interval,
+      one-sided Wilcoxon signed-rank p-value, on how many layouts each metric separates (python/paired_statistics.py);
+      the paired slope of the entropy against alpha; the NEES subsets of nees.csv; the disambiguation fractions.
 """
 import argparse
 import csv
@@ -20,26 +22,8 @@ import math
 import os
 import sys
 
-import scipy.stats
-
-
-def t_quantile_975(dof):
-    """Two-sided 95 % Student t quantile with dof degrees of freedom (scipy.stats.t, Debian's python3-scipy)."""
-    if dof <= 0:
-        return float("nan")
-    return float(scipy.stats.t.ppf(0.975, dof))
-
-
-def mean_ci(values):
-    n = len(values)
-    if n == 0:
-        return float("nan"), float("nan"), float("nan")
-    m = sum(values) / n
-    if n < 2:
-        return m, float("nan"), float("nan")
-    sd = math.sqrt(sum((v - m) ** 2 for v in values) / (n - 1))
-    half = t_quantile_975(n - 1) * sd / math.sqrt(n)
-    return m, m - half, m + half
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import paired_statistics  # noqa: E402  (python/paired_statistics.py, beside this file)
 
 
 def _read_numeric_csv(path):
@@ -47,14 +31,19 @@ def _read_numeric_csv(path):
         rows = list(csv.DictReader(f))
     for r in rows:
         for key in r:
-            if key not in ("model",):
+            if key not in ("model", "subset", "name"):
                 r[key] = float(r[key])
     return rows
 
 
 def read_runs(study):
-    """runs.csv: the results of every run (the same bytes for any threads and ranks)."""
-    return _read_numeric_csv(os.path.join(study, "runs.csv"))
+    """runs.csv: the results of every run (the same bytes for any threads and ranks). A folder written before
+    layouts existed has one layout, 0."""
+    rows = _read_numeric_csv(os.path.join(study, "runs.csv"))
+    for r in rows:
+        r["layout"] = int(r.get("layout", 0))
+        r["track"] = int(r["track"])
+    return rows
 
 
 def read_timings(study):
@@ -64,51 +53,83 @@ def read_timings(study):
     return _read_numeric_csv(path if os.path.exists(path) else os.path.join(study, "runs.csv"))
 
 
+def read_nees(study):
+    """nees.csv: {(alpha, model, subset): {mean, count, lower, upper, inside}}; a folder without subsets has
+    the one subset "heaviest"."""
+    result = {}
+    for r in _read_numeric_csv(os.path.join(study, "nees.csv")):
+        key = (r["alpha"], r["model"], r.get("subset", "heaviest"))
+        result[key] = {"mean": r["nees_mean"], "count": int(r["count"]), "lower": r["lower"], "upper": r["upper"],
+                       "inside": bool(r["lower"] <= r["nees_mean"] <= r["upper"])}
+    return result
+
+
 METRICS = [("entropy", "H(w) over P(beta)"), ("det_cov", "det(Sigma) of position"),
            ("err_wmax", "error of w_max [m]"), ("err_wavg", "weighted error [m]")]
+NEES_SUBSETS = ("heaviest", "heaviest_correct", "heaviest_wrong", "mixture")
+
+
+def mean_interval(groups, seed=1):
+    """Mean of the values of `groups` (a list of per-layout lists) with its stratified bootstrap 95 % interval."""
+    return paired_statistics.paired_bootstrap(groups, seed=seed)
 
 
 def analyze(study, alpha=0.25):
+    """Paper A's four metrics at `alpha` (the nearest in the study), classifier − geometric per track, compared per
+    layout and pooled (python/paired_statistics.py: stratified paired bootstrap and one-sided Wilcoxon)."""
     rows = read_runs(study)
     alphas = sorted({r["alpha"] for r in rows})
-    by = {(r["alpha"], r["model"], int(r["track"])): r for r in rows}
-    tracks = sorted({int(r["track"]) for r in rows})
-    result = {"alpha": alpha, "tracks": len(tracks), "paired": {}, "nees": {}, "disambiguated": {}}
     near = min(alphas, key=lambda a: abs(a - alpha))
-    result["alpha"] = near
+    by = {(r["layout"], r["alpha"], r["model"], r["track"]): r for r in rows}
+    layouts = sorted({r["layout"] for r in rows})
+    pairs = sorted({(r["layout"], r["track"]) for r in rows if r["alpha"] == near})
+    pairs = [p for p in pairs if (p[0], near, "classifier", p[1]) in by and (p[0], near, "geometric", p[1]) in by]
+    result = {"alpha": near, "layouts": len(layouts), "tracks": len(pairs), "paired": {}, "nees": {},
+              "disambiguated": {}}
     for metric, _ in METRICS:
-        diffs = [by[(near, "classifier", t)][metric] - by[(near, "geometric", t)][metric] for t in tracks
-                 if (near, "classifier", t) in by and (near, "geometric", t) in by]
-        m, lo, hi = mean_ci(diffs)
-        result["paired"][metric] = {"mean_difference": m, "ci_low": lo, "ci_high": hi,
-                                    "classifier_mean": mean_ci([by[(near, "classifier", t)][metric] for t in tracks])[0],
-                                    "geometric_mean": mean_ci([by[(near, "geometric", t)][metric] for t in tracks])[0],
-                                    "excludes_zero": bool(hi < 0 or lo > 0)}
+        groups = {}
+        for layout, track in pairs:
+            c, g = by[(layout, near, "classifier", track)], by[(layout, near, "geometric", track)]
+            if math.isfinite(c[metric]) and math.isfinite(g[metric]):
+                groups.setdefault(layout, []).append(c[metric] - g[metric])
+        comparison = paired_statistics.compare(groups)
+        pooled = comparison["pooled"]
+        means = {model: mean_interval([[by[(l, near, model, t)][metric] for (l, t) in pairs if l == layout]
+                                       for layout in layouts])["mean"] for model in ("classifier", "geometric")}
+        result["paired"][metric] = {"mean_difference": pooled["mean"], "ci_low": pooled["ci_low"],
+                                    "ci_high": pooled["ci_high"], "p_less": pooled["p_less"],
+                                    "nonzero": pooled["nonzero"], "median_difference": pooled["median"],
+                                    "excludes_zero": pooled["separates"],
+                                    "layouts_separating": comparison["layouts_separating"],
+                                    "per_layout": comparison["layouts"],
+                                    "classifier_mean": means["classifier"], "geometric_mean": means["geometric"]}
     if len(alphas) >= 2:
-        slopes = []
-        for t in tracks:
-            xs = [a for a in alphas if (a, "classifier", t) in by]
-            ys = [by[(a, "classifier", t)]["entropy"] for a in xs]
+        slopes = {}
+        for layout, track in sorted({(r["layout"], r["track"]) for r in rows}):
+            xs = [a for a in alphas if (layout, a, "classifier", track) in by]
+            ys = [by[(layout, a, "classifier", track)]["entropy"] for a in xs]
+            if len(xs) < 2 or not all(math.isfinite(y) for y in ys):
+                continue
             mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
             sxx = sum((x - mx) ** 2 for x in xs)
-            slopes.append(sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx)
-        m, lo, hi = mean_ci(slopes)
-        result["entropy_slope"] = {"mean": m, "ci_low": lo, "ci_high": hi, "below_zero": bool(hi < 0)}
-    nees_path = os.path.join(study, "nees.csv")
-    if os.path.exists(nees_path):
-        with open(nees_path) as f:
-            for r in csv.DictReader(f):
-                if abs(float(r["alpha"]) - near) < 1e-12:
-                    mean, lower, upper = float(r["nees_mean"]), float(r["lower"]), float(r["upper"])
-                    result["nees"][r["model"]] = {"mean": mean, "lower": lower, "upper": upper,
-                                                  "inside": bool(lower <= mean <= upper)}
+            slopes.setdefault(layout, []).append(sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx)
+        e = mean_interval([slopes[layout] for layout in sorted(slopes)])
+        result["entropy_slope"] = {"mean": e["mean"], "ci_low": e["ci_low"], "ci_high": e["ci_high"],
+                                   "below_zero": bool(e["ci_high"] < 0)}
+    nees = read_nees(study)
     for model in ("classifier", "geometric"):
-        flags = [by[(near, model, t)]["disambiguated_at_step"] for t in tracks if (near, model, t) in by]
-        correct = [by[(near, model, t)]["heaviest_history_correct"] for t in tracks if (near, model, t) in by]
+        result["nees"][model] = {subset: nees[(near, model, subset)] for subset in NEES_SUBSETS
+                                 if (near, model, subset) in nees}
+        chosen = [by[(l, near, model, t)] for (l, t) in pairs]
+        flags = [r["disambiguated_at_step"] for r in chosen]
+        correct = [r["heaviest_history_correct"] for r in chosen]
+        per_layout = {layout: sum(r["heaviest_history_correct"] for r in chosen if r["layout"] == layout) /
+                      max(1, sum(1 for r in chosen if r["layout"] == layout)) for layout in layouts}
         result["disambiguated"][model] = {"fraction": sum(flags) / len(flags) if flags else float("nan"),
-                                          "heaviest_correct": sum(correct) / len(correct) if correct else float("nan")}
+                                          "heaviest_correct": sum(correct) / len(correct) if correct else float("nan"),
+                                          "heaviest_correct_per_layout": per_layout}
     tv = [r["analytic_total_variation"] for r in rows if r["sampled_candidates"] > 0]
-    result["sampled_vs_analytic_total_variation"] = mean_ci(tv)[0] if tv else float("nan")
+    result["sampled_vs_analytic_total_variation"] = sum(tv) / len(tv) if tv else float("nan")
     result["gate_lost_mass_max"] = max(r["gate_lost_mass"] for r in rows)
     timings = read_timings(study)
     result["sampled_candidates"] = sum(r["sampled_candidates"] for r in rows)
@@ -123,19 +144,26 @@ def fig5(study, out):
     import matplotlib.pyplot as plt
     rows = read_runs(study)
     alphas = sorted({r["alpha"] for r in rows})
-    fig, axes = plt.subplots(1, 4, figsize=(16, 3.6))
+    layouts = sorted({r["layout"] for r in rows})
+    tracks = len({(r["layout"], r["track"]) for r in rows})
+    fig, axes = plt.subplots(1, 4, figsize=(16, 3.8))
     for ax, (metric, title) in zip(axes, METRICS):
         for model, color in (("geometric", "tab:blue"), ("classifier", "tab:red")):
-            stats = [mean_ci([r[metric] for r in rows if r["alpha"] == a and r["model"] == model]) for a in alphas]
-            ms = [s[0] for s in stats]
-            err = [[s[0] - s[1] for s in stats], [s[2] - s[0] for s in stats]]
+            stats = [mean_interval([[r[metric] for r in rows if r["alpha"] == a and r["model"] == model and
+                                     r["layout"] == layout and math.isfinite(r[metric])] for layout in layouts])
+                     for a in alphas]
+            ms = [s["mean"] for s in stats]
+            err = [[s["mean"] - s["ci_low"] for s in stats], [s["ci_high"] - s["mean"] for s in stats]]
             ax.errorbar(alphas, ms, yerr=err, color=color, marker="o", capsize=3,
                         label="with classifier model" if model == "classifier" else "geometric only")
-        ax.set_xlabel("alpha")
+        ax.set_xlabel("alpha (classifier viewpoint dependency, A eq. 18)")
         ax.set_title(title)
+        if metric == "det_cov":
+            ax.set_yscale("log")
         ax.grid(alpha=0.3)
     axes[0].legend(fontsize=8)
-    fig.suptitle("Hybrid belief on aliased2d: final-step metrics against alpha (mean over tracks, 95 % CI)")
+    fig.suptitle(f"Hybrid belief on aliased2d: final-step metrics against alpha ({len(layouts)} layouts, {tracks} "
+                 "tracks; mean with stratified bootstrap 95 % interval)")
     fig.tight_layout()
     fig.savefig(out, dpi=110)
     print(f"wrote {out}")

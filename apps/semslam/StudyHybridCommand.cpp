@@ -1,11 +1,14 @@
 // semslam study hybrid: paper A's statistical study (sec. V, Fig. 5) on aliased2d, with and without the classifier
-// model, over tracks and alphas (src/semslam/study/HybridStudy.h). Under mpirun the runs are spread over the ranks
-// (DistributedRuns.h); rank 0 writes the folder, the same bytes for any layout but timings.csv (docs/studies.md).
+// model, over layouts (generated, --layouts/--layout-seed, or scenario files, --scenario), tracks and alphas
+// (src/semslam/study/HybridStudy.h). Under mpirun the runs are spread over the ranks (DistributedRuns.h); rank 0
+// writes the folder, the same bytes for any number of ranks and threads but timings.csv (docs/studies.md).
 
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "Commands.h"
 #include "DistributedRuns.h"
@@ -23,7 +26,9 @@ namespace semslam::cli {
 namespace {
 
 struct StudyHybridArguments {
-  std::string scenario;  ///< a scenario file; empty: the built-in layout
+  std::vector<std::string> scenarios;  ///< scenario files, a layout each; empty: generated layouts
+  int layouts = 10;                    ///< generated layouts (without --scenario)
+  std::uint64_t layoutSeed = 1;        ///< the first generated layout's seed
   std::string out;
   bool overwrite = false;
   bool quiet = false;
@@ -32,7 +37,12 @@ struct StudyHybridArguments {
 
 void runStudy(StudyHybridArguments arguments) {
   HybridStudyOptions& options = arguments.options;
-  if (!arguments.scenario.empty()) options.scenario = readAliased2dScenario(arguments.scenario);
+  if (arguments.scenarios.empty()) {
+    options.layouts = generatedHybridStudyLayouts(arguments.layoutSeed, arguments.layouts);
+  } else {
+    options.layouts.clear();
+    for (const std::string& path : arguments.scenarios) options.layouts.push_back(readAliased2dScenario(path));
+  }
   for (double a : options.alphas) {
     if (!(a >= 0.0 && a <= 1.0)) throw InputError("--alpha: every alpha must be in [0, 1]");
   }
@@ -46,7 +56,7 @@ void runStudy(StudyHybridArguments arguments) {
   // (io/StagedFolder.h); under mpirun a refusal there ends the job.
   std::optional<StagedFolder> folder;
   if (isGatheringRank()) {
-    if (!arguments.scenario.empty()) requireOutputSparesInput(arguments.out, arguments.scenario, "--out");
+    for (const std::string& path : arguments.scenarios) requireOutputSparesInput(arguments.out, path, "--out");
     folder.emplace(arguments.out, arguments.overwrite);
   }
   // Only the rank that writes draws progress (a helper rank's bar is never drawn).
@@ -58,19 +68,19 @@ void runStudy(StudyHybridArguments arguments) {
   if (!distributed.gathered) return;
   std::vector<HybridStudyRow> rows;
   for (const std::string& bytes : distributed.results) rows.push_back(decodeHybridStudyRow(bytes));
-  writeHybridStudy(folder->path(), rows, distributed.layout);
+  writeHybridStudy(folder->path(), options, rows, distributed.layout);
   folder->commit();
   for (std::size_t i = 0; i < rows.size(); ++i) {
     if (!rows[i].error.empty() && !arguments.quiet) {
-      std::fprintf(stderr, "semslam: warning: run %zu (alpha %g, track %d, %s) failed: %s\n", i, rows[i].alpha,
-                   rows[i].track, rows[i].model.c_str(), rows[i].error.c_str());
+      std::fprintf(stderr, "semslam: warning: run %zu (layout %d, alpha %g, track %d, %s) failed: %s\n", i,
+                   rows[i].layout, rows[i].alpha, rows[i].track, rows[i].model.c_str(), rows[i].error.c_str());
     }
   }
-  std::printf("hybrid study: %zu runs (%d tracks x %zu alphas x 2 models, %d steps, %d failed) in %.1f s on %d "
-              "rank(s) x %d threads\n",
-              rows.size(), options.tracks, options.alphas.size(), options.steps, failedHybridRuns(rows),
-              distributed.layout.wallSeconds, distributed.layout.ranks, options.threads);
-  std::printf("wrote %s/{runs.csv,summary.csv,nees.csv,timings.csv}\n", arguments.out.c_str());
+  std::printf("hybrid study: %zu runs (%zu layouts x %d tracks x %zu alphas x 2 models, %d steps, %d failed) in "
+              "%.1f s on %d rank(s) x %d threads\n",
+              rows.size(), options.layouts.size(), options.tracks, options.alphas.size(), options.steps,
+              failedHybridRuns(rows), distributed.layout.wallSeconds, distributed.layout.ranks, options.threads);
+  std::printf("wrote %s/{runs.csv,summary.csv,nees.csv,timings.csv,layouts.csv,layouts/}\n", arguments.out.c_str());
 }
 
 }  // namespace
@@ -79,9 +89,20 @@ void addStudyHybridCommand(CLI::App& study) {
   auto arguments = std::make_shared<StudyHybridArguments>();
   HybridStudyOptions& o = arguments->options;
   CLI::App* hybrid = study.add_subcommand("hybrid", "paper A's study: hybrid belief with and without the classifier");
-  hybrid->add_option("--scenario", arguments->scenario, "aliased2d scenario JSON (default: the built-in layout)")
-      ->check(CLI::ExistingFile);
-  hybrid->add_option("--tracks", o.tracks, "tracks per alpha")->check(CLI::Range(1, 100000))->capture_default_str();
+  CLI::Option* scenario =
+      hybrid
+          ->add_option("--scenario", arguments->scenarios,
+                       "aliased2d scenario JSON files, one layout each (default: generated layouts)")
+          ->check(CLI::ExistingFile);
+  hybrid->add_option("--layouts", arguments->layouts, "generated layouts (sim/Aliased2dLayout.h)")
+      ->check(CLI::Range(1, 10000))
+      ->capture_default_str()
+      ->excludes(scenario);
+  hybrid->add_option("--layout-seed", arguments->layoutSeed, "seed of the first generated layout (then +1, +2, ...)")
+      ->check(unsignedInteger64())
+      ->capture_default_str()
+      ->excludes(scenario);
+  hybrid->add_option("--tracks", o.tracks, "tracks per layout and alpha")->check(CLI::Range(1, 100000))->capture_default_str();
   hybrid->add_option("--steps", o.steps, "steps per track")->check(CLI::Range(1, 100000))->capture_default_str();
   hybrid->add_option("--alpha", o.alphas, "classifier viewpoint dependencies, comma separated")
       ->delimiter(',')

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -111,6 +112,25 @@ TEST(SampledLikelihood, SharedDrawsOfTheWholeMarginalServeAFactorSetOnPartOfIt) 
   const JointMarginal onlyAMarginal({toy.a}, {2}, toy.covariance.topLeftCorner(2, 2));
   EXPECT_THROW(sampledLikelihood(toy.factors, MarginalSamples(toy.values, onlyAMarginal, 10, other)),
                std::invalid_argument);
+}
+
+TEST(SampledLikelihood, LogTermsOfFactorSetsOnSharedDrawsAdd) {
+  // The per-draw log integrand of a union of factor sets is the sum of theirs (hybrid/PropWeights.cpp weighs each
+  // candidate as such a sum), and the likelihood is the log-space mean of the terms.
+  const LinearToy toy;
+  std::mt19937 rng(11);
+  const MarginalSamples draws(toy.values, toy.marginal, 500, rng);
+  const std::vector<FactorPtr> first = {toy.factors[0]}, second = {toy.factors[1]};
+  const Vector sum = sampledLogTerms(first, draws) + sampledLogTerms(second, draws);
+  const Vector whole = sampledLogTerms(toy.factors, draws);
+  ASSERT_EQ(whole.size(), 500);
+  EXPECT_LT((whole - sum).cwiseAbs().maxCoeff(), 1e-12 * (1.0 + whole.cwiseAbs().maxCoeff()));
+  const SampledLikelihood likelihood = sampledLikelihood(toy.factors, draws);
+  const double maximum = whole.maxCoeff();
+  EXPECT_NEAR(likelihood.logLikelihood, maximum + std::log((whole.array() - maximum).exp().mean()), 1e-12);
+  // A weight of zero at a draw is a term of −∞ there.
+  const Vector weighted = sampledLogTerms(first, draws, [](const Values&) { return 0.0; });
+  EXPECT_TRUE((weighted.array() == -std::numeric_limits<double>::infinity()).all());
 }
 
 TEST(SampledLikelihood, SharedDrawsMakeTheRatioOfTwoCandidatesLessNoisy) {

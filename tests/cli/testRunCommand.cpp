@@ -7,6 +7,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "semslam/io/ScenarioFile.h"
+#include "semslam/sim/Aliased2dLayout.h"
 #include "support/RunCommand.h"
 
 using semslam::test::runSemslam;
@@ -173,19 +175,55 @@ TEST(RunCommand, BadInputExitsWithTwo) {
 
 TEST(StudyCommand, SmallHybridStudyWritesSummary) {
   const fs::path dir = freshDirectory("semslam_study_hybrid");
-  const auto result = runSemslam("study hybrid --tracks 2 --steps 2 --alpha 0.25 --samples 50 --out \"" +
-                                 dir.string() + "\"");
+  const auto result = runSemslam("study hybrid --layouts 2 --layout-seed 7 --tracks 2 --steps 2 --alpha 0.25 "
+                                 "--samples 50 --out \"" + dir.string() + "\"");
   ASSERT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_NE(result.output.find("8 runs (2 layouts x 2 tracks x 1 alphas x 2 models"), std::string::npos)
+      << result.output;
   std::ifstream summary(dir / "summary.csv");
   std::string header;
   std::getline(summary, header);
-  EXPECT_EQ(header, "alpha,model,entropy,det_cov,err_wmax,err_wavg");
+  EXPECT_EQ(header, "alpha,model,entropy,det_cov,err_wmax,err_wavg,heaviest_correct");
+  std::ifstream layouts(dir / "layouts.csv");
+  std::string line;
+  std::getline(layouts, line);
+  EXPECT_EQ(line, "layout,name,objects");
+  std::getline(layouts, line);
+  EXPECT_EQ(line, "0,aliased2d-layout-7,6");
+  std::getline(layouts, line);
+  EXPECT_EQ(line, "1,aliased2d-layout-8,6");
+  // Every layout is written as a scenario that a later study can run alone.
+  EXPECT_EQ(semslam::readAliased2dScenario((dir / "layouts" / "layout_1.json").string()),
+            semslam::generatedAliased2dScenario(8));
+  fs::remove_all(dir);
+}
+
+TEST(StudyCommand, HybridStudyTakesScenarioFilesAsLayoutsButNotWithGeneratedOnes) {
+  const fs::path dir = freshDirectory("semslam_study_hybrid_files");
+  semslam::writeAliased2dScenario((dir / "a.json").string(), semslam::defaultAliased2dScenario());
+  semslam::writeAliased2dScenario((dir / "b.json").string(), semslam::generatedAliased2dScenario(3));
+  const std::string files = " --scenario \"" + (dir / "a.json").string() + "\" --scenario \"" +
+                            (dir / "b.json").string() + "\"";
+  const auto both = runSemslam("study hybrid --tracks 1 --steps 2 --alpha 0.25 --samples 20 --quiet" + files +
+                               " --out \"" + (dir / "study").string() + "\"");
+  ASSERT_EQ(both.exitCode, 0) << both.output;
+  std::ifstream layouts(dir / "study" / "layouts.csv");
+  std::string line;
+  std::getline(layouts, line);
+  std::getline(layouts, line);
+  EXPECT_EQ(line, "0," + semslam::defaultAliased2dScenario().name + ",6");
+  std::getline(layouts, line);
+  EXPECT_EQ(line, "1,aliased2d-layout-3,6");
+  const auto mixed = runSemslam("study hybrid --layouts 3 --tracks 1 --steps 2 --quiet" + files + " --out \"" +
+                                (dir / "mixed").string() + "\"");
+  EXPECT_EQ(mixed.exitCode, 2) << mixed.output;
+  EXPECT_NE(mixed.output.find("excludes"), std::string::npos) << mixed.output;
   fs::remove_all(dir);
 }
 
 TEST(StudyCommand, AStudyRefusesAFullFolderUnlessOverwriteWhichReplacesItWhole) {
   const fs::path dir = freshDirectory("semslam_study_overwrite");
-  const std::string study = "study hybrid --tracks 1 --steps 2 --alpha 0.25 --samples 20 --quiet --out \"" +
+  const std::string study = "study hybrid --layouts 1 --tracks 1 --steps 2 --alpha 0.25 --samples 20 --quiet --out \"" +
                             (dir / "study").string() + "\"";
   ASSERT_EQ(runSemslam(study).exitCode, 0);
   const auto again = runSemslam(study);

@@ -83,7 +83,7 @@ void expectTimingsOfRanks(const std::string& folder, int ranks) {
 TEST(StudyMpi, HybridStudyUnderOneTwoAndFourRanksEqualsOneProcess) {
   if (!mpiBuilt()) GTEST_SKIP() << "semslam built without MPI (SEMSLAM_WITH_MPI=OFF or no libopenmpi-dev)";
   test::StudyScratch scratch;
-  const std::string study = "study hybrid --tracks 2 --steps 3 --alpha 0,0.5 --samples 100 --seed 4 --quiet ";
+  const std::string study = "study hybrid --layouts 2 --tracks 2 --steps 3 --alpha 0,0.5 --samples 100 --seed 4 --quiet ";
   const test::CommandResult single = test::runSemslam(study + "--threads 2 --out \"" + scratch.file("single") + "\"");
   ASSERT_EQ(single.exitCode, 0) << single.output;
   expectTimingsOfRanks(scratch.file("single"), 1);
@@ -119,12 +119,13 @@ TEST(StudyMpi, ARankThatDiesFailsTheStudyWithoutHanging) {
   test::StudyScratch scratch;
   const std::string out = scratch.file("out");
   const test::CommandResult result =
-      runUnderMpirun(2, "study hybrid --tracks 4 --steps 3 --alpha 0,0.5 --samples 100 --quiet --threads 1 --out \"" +
-                            out + "\"",
-                     "SEMSLAM_TEST_RANK1_EXIT_AT_JOB=2");
+      runUnderMpirun(2,
+                     "study hybrid --layouts 1 --tracks 10 --steps 3 --alpha 0,0.5 --samples 500 --quiet "
+                     "--threads 1 --out \"" + out + "\"",
+                     "SEMSLAM_TEST_RANK1_EXIT_AT_JOB=1");  // its first job: the runs are too quick to count on more
   EXPECT_NE(result.exitCode, 0) << result.output;
   EXPECT_NE(result.exitCode, 124) << "timed out: the study hung\n" << result.output;  // timeout's exit code
-  EXPECT_NE(result.output.find("rank 1 exits at its job 2"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("rank 1 exits at its job 1"), std::string::npos) << result.output;
   EXPECT_FALSE(fs::exists(out + "/runs.csv")) << "rank 0 wrote results of an incomplete study";
 }
 

@@ -63,6 +63,35 @@ TEST(Sampling, RankDeficientCovarianceStaysInItsSubspace) {
   EXPECT_THROW(sampleGaussian(Vector::Zero(2), Matrix::Identity(3, 3), rng), std::invalid_argument);
 }
 
+TEST(Sampling, PairedNormalsAreIndependentStandardNormals) {
+  // Two rows: row 0 holds the cosine and row 1 the sine of each pair (storage order, column by column), so the
+  // correlation of the rows is that of the pair's two normals: zero for independent draws.
+  std::mt19937 rng(74);
+  const int n = 200000;
+  const Matrix draws = standardNormalMatrix(2, n, rng);
+  double mean0 = draws.row(0).mean(), mean1 = draws.row(1).mean();
+  const double variance0 = (draws.row(0).array() - mean0).square().mean();
+  const double variance1 = (draws.row(1).array() - mean1).square().mean();
+  const double covariance = ((draws.row(0).array() - mean0) * (draws.row(1).array() - mean1)).mean();
+  const double fourthMoment = draws.row(1).array().pow(4).mean();  // 3 for a normal
+  EXPECT_NEAR(mean0, 0.0, 5.0 / std::sqrt(n));
+  EXPECT_NEAR(mean1, 0.0, 5.0 / std::sqrt(n));
+  EXPECT_NEAR(variance0, 1.0, 5.0 * std::sqrt(2.0 / n));
+  EXPECT_NEAR(variance1, 1.0, 5.0 * std::sqrt(2.0 / n));
+  EXPECT_NEAR(covariance, 0.0, 5.0 / std::sqrt(n));
+  EXPECT_NEAR(fourthMoment, 3.0, 5.0 * std::sqrt(96.0 / n));
+}
+
+TEST(Sampling, PairedNormalsConsumeFourOutputsPerPair) {
+  std::mt19937 odd(9), reference(9);
+  const Matrix draws = standardNormalMatrix(3, 1, odd);  // two pairs, the last sine discarded
+  reference.discard(8);
+  EXPECT_EQ(odd(), reference());
+  std::mt19937 again(9);
+  EXPECT_EQ(standardNormalMatrix(3, 1, again), draws);
+  EXPECT_THROW(standardNormalMatrix(-1, 2, again), std::invalid_argument);
+}
+
 TEST(Sampling, ASeedRepeatsItsDraws) {
   std::mt19937 a(5), b(5);
   for (int i = 0; i < 100; ++i) EXPECT_EQ(standardNormal(a), standardNormal(b));

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <vector>
 
 #include "semslam/models/VisibilityModel.h"
@@ -128,6 +129,25 @@ TEST(VisibilityModel2, AssociationProbabilityFollowsTheVisibleObjects) {
   EXPECT_DOUBLE_EQ(shared.associationProbability(robot, objects, twice), 1.0 / 9.0);
   EXPECT_EQ(model.uniformAssociationProbability(0, 1), 0.0);
   EXPECT_NEAR(model.uniformAssociationProbability(100, 5), 1.0 / (100.0 * 99 * 98 * 97 * 96), 1e-22);
+}
+
+TEST(VisibilityModel2, TheIndicatorIsTheProductOfEachAssociatedObjectsVisibility) {
+  // hybrid/PropWeights.cpp adds per-object log visibilities: for distinct objects the indicator factors.
+  const VisibilityModel2 model(std::numbers::pi / 2.0, 6.0);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> coordinate(-6.0, 6.0), angle(-std::numbers::pi, std::numbers::pi);
+  int feasible = 0, infeasible = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const SE2 robot(0.25 * coordinate(rng), 0.25 * coordinate(rng), angle(rng));
+    std::vector<Point2> objects;
+    for (int i = 0; i < 4; ++i) objects.emplace_back(coordinate(rng), coordinate(rng));
+    const std::vector<int> beta{trial % 4, (trial / 4) % 4 == trial % 4 ? (trial + 1) % 4 : (trial / 4) % 4};
+    const bool product = model.visible(robot, objects[beta[0]]) && model.visible(robot, objects[beta[1]]);
+    EXPECT_EQ(model.associationFeasible(robot, objects, beta), product);
+    (product ? feasible : infeasible) += 1;
+  }
+  EXPECT_GT(feasible, 30);  // both outcomes were exercised
+  EXPECT_GT(infeasible, 100);
 }
 
 TEST(VisibilityModel3, AssociationProbability) {

@@ -4,6 +4,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <map>
+#include <sstream>
 #include <string>
 
 #include "semslam/study/HybridStudy.h"
@@ -14,6 +17,7 @@ namespace {
 
 HybridStudyOptions tinyStudy(int threads) {
   HybridStudyOptions options;
+  options.layouts = generatedHybridStudyLayouts(1, 2);
   options.tracks = 2;
   options.steps = 3;
   options.alphas = {0.0, 0.5};
@@ -27,14 +31,16 @@ HybridStudyOptions tinyStudy(int threads) {
 
 TEST(HybridStudy, ResultsDoNotDependOnTheThreadCount) {
   const std::vector<HybridStudyRow> one = runHybridStudy(tinyStudy(1)), two = runHybridStudy(tinyStudy(2));
-  ASSERT_EQ(one.size(), 8u);
+  ASSERT_EQ(one.size(), 16u);  // 2 layouts x 2 alphas x 2 tracks x 2 models
   ASSERT_EQ(one.size(), two.size());
   for (std::size_t i = 0; i < one.size(); ++i) {
+    EXPECT_EQ(one[i].layout, two[i].layout);
     EXPECT_EQ(one[i].model, two[i].model);
     EXPECT_EQ(one[i].track, two[i].track);
     EXPECT_EQ(one[i].entropy, two[i].entropy);
     EXPECT_EQ(one[i].errWmax, two[i].errWmax);
     EXPECT_EQ(one[i].detCov, two[i].detCov);
+    EXPECT_EQ(one[i].mixtureNees, two[i].mixtureNees);
     EXPECT_TRUE(one[i].error.empty()) << one[i].error;
     EXPECT_GE(one[i].entropy, 0.0);
     EXPECT_GT(one[i].detCov, 0.0);
@@ -61,11 +67,12 @@ TEST(HybridStudy, RunsOneByOneEqualTheStudy) {
 TEST(HybridStudy, WritesRunsSummaryNeesAndTimings) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "semslam_hybrid_study_test";
   std::filesystem::remove_all(dir);
-  writeHybridStudy(dir.string(), runHybridStudy(tinyStudy(2)));
+  const HybridStudyOptions options = tinyStudy(2);
+  writeHybridStudy(dir.string(), options, runHybridStudy(options));
   std::ifstream summary(dir / "summary.csv");
   std::string header, line;
   std::getline(summary, header);
-  EXPECT_EQ(header, "alpha,model,entropy,det_cov,err_wmax,err_wavg");
+  EXPECT_EQ(header, "alpha,model,entropy,det_cov,err_wmax,err_wavg,heaviest_correct");
   int rows = 0;
   while (std::getline(summary, line)) ++rows;
   EXPECT_EQ(rows, 4);  // 2 alphas x 2 models
@@ -75,9 +82,69 @@ TEST(HybridStudy, WritesRunsSummaryNeesAndTimings) {
   EXPECT_TRUE(std::filesystem::exists(dir / "nees.csv"));
   std::ifstream timings(dir / "timings.csv");
   std::getline(timings, header);
-  EXPECT_EQ(header, "alpha,model,track,rank,sampling_s,time_s,threads,ranks,wall_time_s");
+  EXPECT_EQ(header, "layout,alpha,model,track,rank,sampling_s,time_s,threads,ranks,wall_time_s");
   rows = 0;
   while (std::getline(timings, line)) ++rows;
-  EXPECT_EQ(rows, 8);
+  EXPECT_EQ(rows, 16);
+  EXPECT_TRUE(std::filesystem::exists(dir / "layouts.csv"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "layouts" / "layout_1.json"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(HybridStudy, LayoutsHaveTheirOwnTracks) {
+  // The same seed and track in two layouts draws two different tracks: layouts do not share track shapes.
+  EXPECT_NE(layoutTrackSeed(1, 0), layoutTrackSeed(1, 1));
+  EXPECT_NE(layoutTrackSeed(1, 0), layoutTrackSeed(2, 0));
+  EXPECT_EQ(layoutTrackSeed(5, 3), layoutTrackSeed(5, 3));
+  const std::vector<Aliased2dScenario> layouts = generatedHybridStudyLayouts(4, 3);
+  ASSERT_EQ(layouts.size(), 3u);
+  EXPECT_EQ(layouts[2].name, "aliased2d-layout-6");
+  EXPECT_THROW(generatedHybridStudyLayouts(1, 0), std::invalid_argument);
+}
+
+TEST(HybridStudy, NeesIsSplitByWhetherTheHeaviestHistoryIsCorrect) {
+  // Hand-made rows: the heaviest component's NEES is 3 on the runs whose history is right and 300 on the one that is
+  // wrong; the mixture's is 2. A failed run (NaN) and a mixture without a unique mean (NaN) are left out.
+  std::vector<HybridStudyRow> rows;
+  const auto add = [&](int track, double nees, bool correct, double mixture) {
+    HybridStudyRow row;
+    row.alpha = 0.25;
+    row.model = "classifier";
+    row.track = track;
+    row.finalNees = nees;
+    row.heaviestComponentCorrect = correct;
+    row.mixtureNees = mixture;
+    rows.push_back(row);
+  };
+  add(0, 3.0, true, 2.0);
+  add(1, 3.0, true, 2.0);
+  add(2, 300.0, false, 2.0);
+  add(3, 3.0, true, std::numeric_limits<double>::quiet_NaN());
+  add(4, std::numeric_limits<double>::quiet_NaN(), true, std::numeric_limits<double>::quiet_NaN());
+  rows.back().error = "failed";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "semslam_hybrid_study_nees_split";
+  std::filesystem::remove_all(dir);
+  HybridStudyOptions options;
+  options.layouts = generatedHybridStudyLayouts(1, 1);
+  writeHybridStudy(dir.string(), options, rows);
+  std::ifstream nees(dir / "nees.csv");
+  std::string line;
+  std::getline(nees, line);
+  EXPECT_EQ(line, "alpha,model,subset,nees_mean,count,lower,upper");
+  std::map<std::string, std::pair<double, int>> subsets;
+  while (std::getline(nees, line)) {
+    std::stringstream fields(line);
+    std::string alpha, model, subset, mean, count;
+    std::getline(fields, alpha, ',');
+    std::getline(fields, model, ',');
+    std::getline(fields, subset, ',');
+    std::getline(fields, mean, ',');
+    std::getline(fields, count, ',');
+    subsets[subset] = {std::stod(mean), std::stoi(count)};
+  }
+  EXPECT_EQ(subsets["heaviest"], std::make_pair(309.0 / 4.0, 4));
+  EXPECT_EQ(subsets["heaviest_correct"], std::make_pair(3.0, 3));
+  EXPECT_EQ(subsets["heaviest_wrong"], std::make_pair(300.0, 1));
+  EXPECT_EQ(subsets["mixture"], std::make_pair(2.0, 3));
   std::filesystem::remove_all(dir);
 }

@@ -17,6 +17,7 @@ bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 TEST(StudyRowBytes, HybridRowRoundTripsBitForBit) {
   HybridStudyRow row;
+  row.layout = 9;
   row.alpha = 0.1;
   row.model = "geometric";
   row.track = 7;
@@ -27,6 +28,8 @@ TEST(StudyRowBytes, HybridRowRoundTripsBitForBit) {
   row.ess = 2.5;
   row.components = 12;
   row.finalNees = 3.25;
+  row.heaviestComponentCorrect = true;
+  row.mixtureNees = 2.0 / 3.0;
   row.assocWeightAtStep = 0.95;
   row.disambiguatedAtStep = true;
   row.heaviestHistoryCorrect = false;
@@ -37,11 +40,13 @@ TEST(StudyRowBytes, HybridRowRoundTripsBitForBit) {
   row.seconds = 1.75;
   row.error = "a failure, with\nnewlines";
   const HybridStudyRow back = decodeHybridStudyRow(encodeHybridStudyRow(row));
+  EXPECT_EQ(back.layout, row.layout);
   EXPECT_EQ(back.model, row.model);
   EXPECT_EQ(back.track, row.track);
+  EXPECT_EQ(back.heaviestComponentCorrect, row.heaviestComponentCorrect);
   for (auto member : {&HybridStudyRow::alpha, &HybridStudyRow::entropy, &HybridStudyRow::detCov,
                       &HybridStudyRow::errWmax, &HybridStudyRow::errWavg, &HybridStudyRow::ess,
-                      &HybridStudyRow::finalNees, &HybridStudyRow::assocWeightAtStep, &HybridStudyRow::gateLostMass,
+                      &HybridStudyRow::finalNees, &HybridStudyRow::mixtureNees, &HybridStudyRow::assocWeightAtStep, &HybridStudyRow::gateLostMass,
                       &HybridStudyRow::analyticTotalVariation, &HybridStudyRow::samplingSeconds,
                       &HybridStudyRow::seconds}) {
     EXPECT_TRUE(sameBits(back.*member, row.*member));

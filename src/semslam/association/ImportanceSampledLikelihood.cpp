@@ -70,9 +70,9 @@ SampledLikelihood importanceSampledLikelihood(std::span<const FactorPtr> factors
 
   std::vector<double> logTerms;
   logTerms.reserve(samples);
-  Vector n(layout.total);
+  const Matrix normals = standardNormalMatrix(layout.total, samples, rng);
   for (int s = 0; s < samples; ++s) {
-    for (int i = 0; i < layout.total; ++i) n(i) = standardNormal(rng);
+    const auto n = normals.col(s);
     const Vector delta = proposal.mean + proposal.root * n;
     retractInto(sample, values, marginal, layout, delta);
     // The integrand of (A, eq. 16) at X_s over the proposal: log p(z | X_s) + log N(δ_s; 0, Σ) − log N(δ_s; δ', Σ')

@@ -33,32 +33,34 @@ LinearizedLikelihood linearizedLikelihood(std::span<const FactorPtr> factors, co
 }
 
 MarginalSamples::MarginalSamples(const Values& values, const JointMarginal& marginal, int samples,
-                                 std::mt19937& rng) {
+                                 std::mt19937& rng)
+    : samples_(samples), keys_(marginal.keys()) {
   if (samples < 2) throw std::invalid_argument("sampled likelihood needs at least 2 samples");
   const TangentLayout layout(marginal, values);
-  for (std::size_t i = 0; i < marginal.keys().size(); ++i) {
-    const Key key = marginal.keys()[i];
-    mean_.insert(key, values.value(key));
-    index_.emplace(key, std::make_pair(layout.offsets[i], layout.dimensions[i]));
-  }
-  const Matrix root = gaussianSquareRoot(marginal.covariance());
-  offsets_.resize(layout.total, samples);
-  Vector n(layout.total);
-  for (int s = 0; s < samples; ++s) {
-    for (int i = 0; i < layout.total; ++i) n(i) = standardNormal(rng);
-    offsets_.col(s) = root * n;
+  const Matrix offsets = gaussianSquareRoot(marginal.covariance()) * standardNormalMatrix(layout.total, samples, rng);
+  drawn_.reserve(keys_.size() * static_cast<std::size_t>(samples));
+  for (std::size_t i = 0; i < keys_.size(); ++i) {
+    const Value& mean = values.value(keys_[i]);
+    for (int s = 0; s < samples; ++s) {
+      drawn_.push_back(retract(mean, offsets.col(s).segment(layout.offsets[i], layout.dimensions[i])));
+    }
   }
 }
 
-Value MarginalSamples::draw(Key key, int s) const {
-  const auto found = index_.find(key);
-  if (found == index_.end()) throw std::invalid_argument("sampled likelihood: a factor's variable is not drawn");
-  const auto [offset, dimension] = found->second;
-  return retract(mean_.value(key), offsets_.col(s).segment(offset, dimension));
+std::size_t MarginalSamples::slot(Key key) const {
+  const auto found = std::find(keys_.begin(), keys_.end(), key);
+  if (found == keys_.end()) throw std::invalid_argument("sampled likelihood: a factor's variable is not drawn");
+  return static_cast<std::size_t>(found - keys_.begin());
 }
 
-SampledLikelihood sampledLikelihood(std::span<const FactorPtr> factors, const MarginalSamples& samples,
-                                    const SampleWeight& weight) {
+bool MarginalSamples::holds(Key key) const { return std::find(keys_.begin(), keys_.end(), key) != keys_.end(); }
+
+const Value& MarginalSamples::draw(Key key, int s) const {
+  return drawn_[slot(key) * static_cast<std::size_t>(samples_) + static_cast<std::size_t>(s)];
+}
+
+Vector sampledLogTerms(std::span<const FactorPtr> factors, const MarginalSamples& samples,
+                       const SampleWeight& weight) {
   const double normalizers = sumOfLogNormalizers(factors);
   // The sample holds the factors' variables only, each retracted in place per draw.
   std::vector<Key> keys;
@@ -71,16 +73,22 @@ SampledLikelihood sampledLikelihood(std::span<const FactorPtr> factors, const Ma
   }
   Values sample;
   for (Key key : keys) sample.insert(key, samples.draw(key, 0));
-  // p(z | H) ≈ (1/n) Σ_s P(Z | X_s) P(β | X_s), X_s drawn from the joint marginal (A, eq. 16-17).
-  std::vector<double> logTerms;
-  logTerms.reserve(static_cast<std::size_t>(samples.size()));
+  // log P(Z | X_s) + log P(β | X_s), X_s drawn from the joint marginal (A, eq. 16-17).
+  Vector logTerms(samples.size());
   for (int s = 0; s < samples.size(); ++s) {
     for (Key key : keys) sample.update(key, samples.draw(key, s));
     double logTerm = -normalizers;
     for (const FactorPtr& factor : factors) logTerm -= 0.5 * factor->chi2(sample);
-    logTerms.push_back(logTerm + logSampleWeight(weight, sample));
+    logTerms(s) = logTerm + logSampleWeight(weight, sample);
   }
-  return meanOfExponentials(logTerms);
+  return logTerms;
+}
+
+SampledLikelihood sampledLikelihood(std::span<const FactorPtr> factors, const MarginalSamples& samples,
+                                    const SampleWeight& weight) {
+  // p(z | H) ≈ (1/n) Σ_s P(Z | X_s) P(β | X_s) (A, eq. 16-17).
+  const Vector logTerms = sampledLogTerms(factors, samples, weight);
+  return meanOfExponentials(std::span<const double>(logTerms.data(), static_cast<std::size_t>(logTerms.size())));
 }
 
 SampledLikelihood sampledLikelihood(std::span<const FactorPtr> factors, const Values& values,

@@ -56,31 +56,41 @@ struct SampledLikelihood {
 /// Per-sample weight w(X_s) ≥ 0 (e.g. the visibility model); empty: w ≡ 1.
 using SampleWeight = std::function<double(const Values& sample)>;
 
-/// Draws X_s = X̄ ⊕ δ_s, δ_s = L n_s (L Lᵀ = Σ the marginal's covariance, n_s ~ N(0, I), one n_s after the other
-/// from `rng`) of a joint marginal, drawn once to be shared: every factor set evaluated on the same MarginalSamples
-/// sees the same draws (common random numbers: the weights of candidates that share a parent carry correlated, not
-/// independent, Monte Carlo errors, so their ratios are less noisy), and the draws' values of a subset of the
-/// variables are draws of that subset's marginal, so one set of draws of x_k and every object serves every
-/// association of a hybrid component (A, eq. 17). Held as X̄ and the tangent offsets δ_s; a factor set's
-/// evaluation retracts only the variables it names.
+/// Draws X_s = X̄ ⊕ δ_s, δ_s = L n_s (L Lᵀ = Σ the marginal's covariance, n_s ~ N(0, I) the columns of one
+/// standardNormalMatrix from `rng`) of a joint marginal, drawn once to be shared: every factor set evaluated on the
+/// same MarginalSamples sees the same draws (common random numbers: the weights of candidates that share a parent
+/// carry correlated, not independent, Monte Carlo errors, so their ratios are less noisy), and the draws' values of a
+/// subset of the variables are draws of that subset's marginal, so one set of draws of x_k and the objects serves
+/// every association of a hybrid component (A, eq. 17). Held as the retracted values X̄_key ⊕ (δ_s)_key of every
+/// variable and draw, computed once: many factor sets read the same draws.
 class MarginalSamples {
  public:
   /// Throws std::invalid_argument for samples < 2 or a marginal that does not fit `values`.
   MarginalSamples(const Values& values, const JointMarginal& marginal, int samples, std::mt19937& rng);
-  int size() const { return static_cast<int>(offsets_.cols()); }
+  int size() const { return samples_; }
   /// X̄_key ⊕ (δ_s)_key; throws std::invalid_argument for a variable the draws do not hold.
-  Value draw(Key key, int s) const;
-  bool holds(Key key) const { return index_.count(key) != 0; }
+  const Value& draw(Key key, int s) const;
+  bool holds(Key key) const;
 
  private:
-  Values mean_;
-  std::map<Key, std::pair<int, int>> index_;  // key → (tangent offset, dimension)
-  Matrix offsets_;                            // δ_s in column s
+  /// The position of `key` among the marginal's keys (a handful, searched in turn); throws when absent.
+  std::size_t slot(Key key) const;
+  int samples_ = 0;
+  std::vector<Key> keys_;       // the marginal's keys in its order
+  std::vector<Value> drawn_;    // variable i's draw s at i · samples + s
 };
 
-/// The Monte Carlo marginal likelihood (A, eq. 16-17) over shared draws: log (1/n) Σ_s P(Z | X_s) w(X_s), where the
-/// sample handed to w holds the factors' variables only. Throws std::invalid_argument when a factor names a variable
+/// The per-sample log terms t_s = log P(Z | X_s) + log w(X_s) = −Σ_f logNormalizer_f − ½ Σ_f chi2_f(X_s) + log w(X_s)
+/// of one factor set on shared draws (the sample handed to w holds the factors' variables only). The terms of
+/// factor sets evaluated on the same draws add: the likelihood of the union of two sets of independent measurements
+/// is the product of theirs at every draw, so a caller that weighs many candidates built from a few shared factor
+/// sets evaluates each set once (hybrid/PropWeights.cpp). Throws std::invalid_argument when a factor names a variable
 /// the draws do not hold.
+Vector sampledLogTerms(std::span<const FactorPtr> factors, const MarginalSamples& samples,
+                       const SampleWeight& weight = {});
+
+/// The Monte Carlo marginal likelihood (A, eq. 16-17) over shared draws: log (1/n) Σ_s P(Z | X_s) w(X_s), the
+/// log-space mean of sampledLogTerms.
 SampledLikelihood sampledLikelihood(std::span<const FactorPtr> factors, const MarginalSamples& samples,
                                     const SampleWeight& weight = {});
 

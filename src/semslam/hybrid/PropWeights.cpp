@@ -11,6 +11,7 @@
 
 #include "semslam/association/AssociationGate.h"
 #include "semslam/association/ImportanceSampledLikelihood.h"
+#include "semslam/association/LikelihoodTerms.h"
 #include "semslam/association/MarginalLikelihood.h"
 #include "semslam/hybrid/Pruning.h"
 
@@ -47,6 +48,69 @@ class FactorCache {
   const std::vector<Detection>& detections_;
   std::map<std::tuple<int, int, int>, std::vector<FactorPtr>> cache_;
   std::map<std::pair<int, int>, FactorPtr> gates_;
+};
+
+/// The class whose factors detection i's object carries in `candidate` (0 without class enumeration).
+int classOf(const HybridProblem& problem, const AssociationCandidate& candidate, int object) {
+  return problem.enumeratesClasses() ? candidate.classes[object] : 0;
+}
+
+/// One parent's shared draws of x_k and the objects its candidates associate, with the per-draw log terms of every
+/// (detection, object, class) factor set and of every object's visibility, each computed once: a candidate's terms
+/// are their sum (sampledLogTerms adds over independent factor sets on the same draws), so the cost grows with the
+/// distinct factor sets, not with the candidates. The visibility indicator of paper A factors over the associated
+/// objects, P(β_k | X_s) = Π_i 1[β_{k,i} visible from x_s] (VisibilityModel2::associationFeasible; the objects of a
+/// candidate are distinct by construction), so its log is the sum of per-object terms 0 or −∞.
+class SharedDraws {
+ public:
+  SharedDraws(const HybridProblem& problem, const PropagatedParent& parent, const std::vector<Key>& keys,
+              int samples, bool visibility, std::mt19937& rng)
+      : problem_(problem),
+        draws_(parent.smoother->estimate(), parent.joint.restrictedTo(keys), samples, rng),
+        pose_(keys.front()),
+        visibility_(visibility) {}
+
+  /// log P(Z_k | X_s) + log P(β_k | X_s) of `candidate` at every draw s (A, eq. 16), its factors from `factors`.
+  Vector logTerms(const AssociationCandidate& candidate, FactorCache& factors) {
+    Vector sum = Vector::Zero(draws_.size());
+    for (int i = 0; i < static_cast<int>(candidate.beta.size()); ++i) {
+      const int object = candidate.beta[i];
+      if (object < 0) continue;
+      sum += factorTerms(i, object, classOf(problem_, candidate, object), factors);
+      if (visibility_) sum += visibilityTerms(object);
+    }
+    return sum;
+  }
+
+ private:
+  const Vector& factorTerms(int detection, int object, int classIndex, FactorCache& factors) {
+    const auto key = std::make_tuple(detection, object, classIndex);
+    auto it = factorTerms_.find(key);
+    if (it == factorTerms_.end()) {
+      it = factorTerms_.emplace(key, sampledLogTerms(factors.get(detection, object, classIndex), draws_)).first;
+    }
+    return it->second;
+  }
+
+  const Vector& visibilityTerms(int object) {
+    auto it = visibilityTerms_.find(object);
+    if (it != visibilityTerms_.end()) return it->second;
+    Vector terms(draws_.size());
+    const Key objectKey = HybridProblem::objectKey(object);
+    for (int s = 0; s < draws_.size(); ++s) {
+      const SE2 robot = std::get<SE2>(draws_.draw(pose_, s));
+      const Vector p = MeasurementFactory::positionOf(draws_.draw(objectKey, s));
+      terms(s) = problem_.visibility().visible(robot, Point2(p(0), p(1))) ? 0.0 : kNegativeInfinity;
+    }
+    return visibilityTerms_.emplace(object, std::move(terms)).first->second;
+  }
+
+  const HybridProblem& problem_;
+  MarginalSamples draws_;
+  Key pose_;
+  bool visibility_;
+  std::map<std::tuple<int, int, int>, Vector> factorTerms_;
+  std::map<int, Vector> visibilityTerms_;
 };
 
 /// The keys of a candidate's integral: x_k, then its objects in order of first association.
@@ -163,16 +227,16 @@ std::size_t keepHeaviest(std::vector<AssociationCandidate>& candidates, std::siz
 
 std::vector<AssociationCandidate> wholeAssociations(const HybridProblem& problem,
                                                     const std::vector<PropagatedParent>& parents, int k,
-                                                    const std::vector<Detection>& detections) {
+                                                    const std::vector<Detection>& detections,
+                                                    std::vector<FactorCache>& caches) {
   const Key pose = poseKey(static_cast<std::uint64_t>(k));
   std::vector<AssociationCandidate> all;
   for (std::size_t p = 0; p < parents.size(); ++p) {
-    FactorCache cache(problem, k, detections);
     std::vector<AssociationCandidate> partials{root(parents[p], p)};
     for (int i = 0; i < static_cast<int>(detections.size()); ++i) {
       std::vector<AssociationCandidate> next;
       for (const AssociationCandidate& partial : partials) {
-        forEachExtension(partial, problem, cache, detections[i], i,
+        forEachExtension(partial, problem, caches[p], detections[i], i,
                          [&](AssociationCandidate child) { next.push_back(std::move(child)); });
       }
       partials = std::move(next);
@@ -188,14 +252,12 @@ std::vector<AssociationCandidate> wholeAssociations(const HybridProblem& problem
 std::vector<AssociationCandidate> oneDetectionAtATime(const HybridProblem& problem, const HybridOptions& options,
                                                       const std::vector<PropagatedParent>& parents, int k,
                                                       const std::vector<Detection>& detections,
-                                                      PropWeightsReport& report) {
+                                                      std::vector<FactorCache>& caches, PropWeightsReport& report) {
   const Key pose = poseKey(static_cast<std::uint64_t>(k));
   const AssociationGate compatibility(options.jointCompatibility);
   const std::size_t candidateCap = static_cast<std::size_t>(options.maxCandidates);
-  std::vector<FactorCache> caches;
   std::vector<AssociationCandidate> partials;
   for (std::size_t p = 0; p < parents.size(); ++p) {
-    caches.emplace_back(problem, k, detections);
     partials.push_back(root(parents[p], p));
     linearize(partials.back(), parents[p], pose);
   }
@@ -241,9 +303,11 @@ std::vector<AssociationCandidate> propagateWeights(const HybridProblem& problem,
     report.branchedOneAtATime = report.wholeAssociationBound > static_cast<double>(options.maxCandidates);
     whole = !report.branchedOneAtATime;
   }
+  std::vector<FactorCache> caches;  // per parent: the factors every candidate of that parent shares
+  for (std::size_t p = 0; p < parents.size(); ++p) caches.emplace_back(problem, k, detections);
   std::vector<AssociationCandidate> candidates =
-      whole ? wholeAssociations(problem, parents, k, detections)
-            : oneDetectionAtATime(problem, options, parents, k, detections, report);
+      whole ? wholeAssociations(problem, parents, k, detections, caches)
+            : oneDetectionAtATime(problem, options, parents, k, detections, caches, report);
   report.candidates = candidates.size();
   if (candidates.empty()) return candidates;
 
@@ -265,53 +329,76 @@ std::vector<AssociationCandidate> propagateWeights(const HybridProblem& problem,
 
   const Key pose = poseKey(static_cast<std::uint64_t>(k));
   const auto start = std::chrono::steady_clock::now();
-  bool anyPositive = false;
-  // Plain Monte Carlo draws x_k and every object once per parent (one Cholesky of the joint marginal) and every
-  // candidate of that parent is weighed on those draws (MarginalSamples: common random numbers). Candidates come
-  // grouped by parent, so one parent's draws are held at a time.
-  std::optional<MarginalSamples> draws;
+  // Plain Monte Carlo draws x_k and the objects the parent's surviving candidates associate once per parent (one
+  // Cholesky of their joint marginal, eq. 17) and weighs every candidate of that parent on those draws (common
+  // random numbers), each factor set once (SharedDraws). Candidates come grouped by parent, so one parent's draws
+  // are held at a time.
+  const auto sampled = [&](const AssociationCandidate& c) {
+    return !c.gated && options.weights != WeightMethod::Analytic && !c.factors.empty();
+  };
+  std::optional<SharedDraws> draws;
   std::size_t drawsParent = 0;
-  for (AssociationCandidate& c : candidates) {
+  std::vector<Point2> visibilityPositions;  // the importance path's per-sample buffers
+  std::vector<int> visibilityBeta;
+  bool anyPositive = false;
+  for (std::size_t index = 0; index < candidates.size(); ++index) {
+    AssociationCandidate& c = candidates[index];
     if (c.gated) {
       c.logWeight = kNegativeInfinity;
       continue;
     }
-    if (options.weights == WeightMethod::Analytic || c.factors.empty()) {
+    if (!sampled(c)) {
       c.logWeight = c.linearizedLogWeight;
-    } else {
-      const PropagatedParent& parent = parents[c.parent];
+      if (std::isfinite(c.logWeight)) anyPositive = true;
+      continue;
+    }
+    const PropagatedParent& parent = parents[c.parent];
+    SampledLikelihood likelihood;
+    if (options.weights == WeightMethod::Importance) {
       const std::vector<Key> keys = integralKeys(pose, c.beta);
       SampleWeight visibility;
       if (options.visibility) {  // the object observation model P(β_k | x_k, X^o_β) (A, eq. 14, 16)
-        visibility = [&problem, &keys](const Values& sample) {
-          const SE2& robot = sample.at<SE2>(keys[0]);
-          std::vector<Point2> positions;
-          std::vector<int> beta;
+        visibility = [&](const Values& sample) {
+          visibilityPositions.clear();
+          visibilityBeta.clear();
           for (std::size_t i = 1; i < keys.size(); ++i) {
             const Vector p = MeasurementFactory::positionOf(sample.value(keys[i]));
-            positions.emplace_back(p(0), p(1));
-            beta.push_back(static_cast<int>(i - 1));
+            visibilityPositions.emplace_back(p(0), p(1));
+            visibilityBeta.push_back(static_cast<int>(i - 1));
           }
-          return problem.visibility().associationFeasible(robot, positions, beta) ? 1.0 : 0.0;
+          return problem.visibility().associationFeasible(sample.at<SE2>(keys[0]), visibilityPositions,
+                                                          visibilityBeta)
+                     ? 1.0
+                     : 0.0;
         };
       }
-      SampledLikelihood likelihood;
-      if (options.weights == WeightMethod::Importance) {
-        const JointMarginal marginal = parent.joint.restrictedTo(keys);  // b⁻[x_k, X^o_β] (A, eq. 17)
-        likelihood = importanceSampledLikelihood(c.factors, parent.smoother->estimate(), marginal, options.samples,
-                                                 rng, visibility, ImportanceProposal{options.importanceIterations});
-      } else {
-        if (!draws || drawsParent != c.parent) {
-          draws.emplace(parent.smoother->estimate(), parent.joint, options.samples, rng);  // b⁻[x_k, X^o]
-          drawsParent = c.parent;
+      const JointMarginal marginal = parent.joint.restrictedTo(keys);  // b⁻[x_k, X^o_β] (A, eq. 17)
+      likelihood = importanceSampledLikelihood(c.factors, parent.smoother->estimate(), marginal, options.samples,
+                                               rng, visibility, ImportanceProposal{options.importanceIterations});
+    } else {
+      if (!draws || drawsParent != c.parent) {
+        // x_k and every object a surviving candidate of this parent associates, in key order: b⁻[x_k, X^o_used]
+        std::vector<bool> used(static_cast<std::size_t>(problem.objects()), false);
+        for (std::size_t j = index; j < candidates.size() && candidates[j].parent == c.parent; ++j) {
+          if (!sampled(candidates[j])) continue;
+          for (int object : candidates[j].beta) {
+            if (object >= 0) used[static_cast<std::size_t>(object)] = true;
+          }
         }
-        likelihood = sampledLikelihood(c.factors, *draws, visibility);
+        std::vector<Key> keys{pose};
+        for (int object = 0; object < problem.objects(); ++object) {
+          if (used[static_cast<std::size_t>(object)]) keys.push_back(HybridProblem::objectKey(object));
+        }
+        draws.emplace(problem, parent, keys, options.samples, options.visibility, rng);
+        drawsParent = c.parent;
       }
-      // w_β1:k ∝ w_β1:k−1 · (1/n_s) Σ_s P(Z_k | X_s) P(β_k | X_s) (A, eq. 16-17)
-      c.logWeight = std::log(parent.component->weight) + likelihood.logLikelihood + c.logConstant;
-      c.relativeStandardError = likelihood.relativeStandardError;
-      ++report.sampled;
+      const Vector terms = draws->logTerms(c, caches[c.parent]);
+      likelihood = meanOfExponentials(std::span<const double>(terms.data(), static_cast<std::size_t>(terms.size())));
     }
+    // w_β1:k ∝ w_β1:k−1 · (1/n_s) Σ_s P(Z_k | X_s) P(β_k | X_s) (A, eq. 16-17)
+    c.logWeight = std::log(parent.component->weight) + likelihood.logLikelihood + c.logConstant;
+    c.relativeStandardError = likelihood.relativeStandardError;
+    ++report.sampled;
     if (std::isfinite(c.logWeight)) anyPositive = true;
   }
   report.samplingSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

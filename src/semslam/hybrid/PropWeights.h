@@ -20,8 +20,12 @@
 //                their linearisation in θ is poor under a broad prior);
 //   sampled      ℓ     = log w_parent + log (1/n_s) Σ_s P(Z | X_s) P(β | X_s) + log-constants     (eq. 16)
 //                with P(β | X_s) the visibility indicator (VisibilityModel2::associationFeasible) when enabled,
-//                X_s drawn from the joint marginal (eq. 17) of x_k and every object, once per parent: the candidates
-//                of one parent are weighed on the same n_s draws (MarginalSamples, common random numbers);
+//                X_s drawn from the joint marginal (eq. 17) of x_k and the objects that the parent's ungated
+//                candidates associate, once per parent: the candidates of one parent are weighed on the same n_s
+//                draws (MarginalSamples, common random numbers). Both factors of the integrand factor over the
+//                detections, P(Z | X_s) = Π_i P(z_i | x_s, o_s(i)) and the indicator = Π_i 1[o(i) visible from x_s],
+//                so each (detection, object, class) term and each object's visibility is computed once per draw
+//                and a candidate's log-integrand is their sum;
 //   importance   ℓ     = log w_parent + log (1/n_s) Σ_s P(Z | X_s) P(β | X_s) N(X_s; X̄, Σ) / q(X_s) + log-constants
 //                with X_s drawn from q, the linearised posterior of the joint variables given F
 //                (ImportanceSampledLikelihood.h): the same integral with far fewer wasted samples under broad priors;

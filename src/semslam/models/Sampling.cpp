@@ -22,6 +22,22 @@ double standardNormal(std::mt19937& rng) {
   return std::sqrt(-2.0 * std::log(1.0 - u1)) * std::cos(2.0 * std::numbers::pi * u2);
 }
 
+Matrix standardNormalMatrix(Eigen::Index rows, Eigen::Index cols, std::mt19937& rng) {
+  if (rows < 0 || cols < 0) throw std::invalid_argument("standardNormalMatrix: negative size");
+  Matrix draws(rows, cols);
+  double* entry = draws.data();
+  const Eigen::Index count = draws.size();
+  for (Eigen::Index i = 0; i < count; i += 2) {
+    const double u1 = uniform01(rng);
+    const double u2 = uniform01(rng);
+    const double radius = std::sqrt(-2.0 * std::log(1.0 - u1));
+    const double angle = 2.0 * std::numbers::pi * u2;
+    entry[i] = radius * std::cos(angle);
+    if (i + 1 < count) entry[i + 1] = radius * std::sin(angle);
+  }
+  return draws;
+}
+
 Matrix gaussianSquareRoot(const Matrix& covariance) {
   const Eigen::Index d = covariance.rows();
   if (covariance.cols() != d) {

@@ -1,6 +1,7 @@
 #include "semslam/study/HybridStudy.h"
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <filesystem>
 #include <limits>
@@ -9,8 +10,12 @@
 
 #include "semslam/core/ExactNumber.h"
 #include "semslam/eval/HypothesisMetrics.h"
-#include "semslam/run/RunMethod.h"
+#include "semslam/eval/PoseMixtureMoments.h"
 #include "semslam/io/AtomicFile.h"
+#include "semslam/io/CsvField.h"
+#include "semslam/io/ScenarioFile.h"
+#include "semslam/run/RunMethod.h"
+#include "semslam/sim/Aliased2dLayout.h"
 #include "semslam/sim/Aliased2dSimulator.h"
 #include "semslam/study/ParallelJobs.h"
 
@@ -29,23 +34,45 @@ bool historyIsTrue(const AssociationHistory& history, const MeasurementLog& log)
   return true;
 }
 
-HybridStudyRow runOne(const HybridStudyOptions& options, std::size_t alphaIndex, int track, bool classifier) {
-  Aliased2dScenario scenario = options.scenario;
-  scenario.alpha = options.alphas[alphaIndex];
-  const MeasurementLog log = simulateAliased2dTrack(scenario, options.seed, track, options.steps, options.tracks);
+/// The NEES of the moment-matched mixture of the components' poses (eval/PoseMixtureMoments.h); NaN when the
+/// components spread over more than a half turn, where the mixture has no unique mean.
+double mixtureNees(const std::vector<HypothesisComponent>& components, const SE2& truth) {
+  std::vector<double> weights;
+  std::vector<SE2> means;
+  std::vector<Matrix3> covariances;
+  for (const HypothesisComponent& component : components) {
+    weights.push_back(component.weight);
+    means.push_back(std::get<SE2>(component.pose));
+    covariances.push_back(component.covariance);
+  }
+  try {
+    const PoseGaussian2 mixture = momentMatchedPoseMixture(weights, means, covariances);
+    return poseNees(mixture.mean, truth, mixture.covariance);
+  } catch (const std::invalid_argument&) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+}
+
+HybridStudyRow runOne(const HybridStudyOptions& options, const HybridStudyRun& job) {
+  Aliased2dScenario scenario = options.layouts[job.layout];
+  scenario.alpha = options.alphas[job.alphaIndex];
+  const MeasurementLog log = simulateAliased2dTrack(scenario, layoutTrackSeed(options.seed, job.layout), job.track,
+                                                    options.steps, options.tracks);
   MethodOptions run;
-  run.method = classifier ? Method::Hybrid : Method::HybridGeometric;
+  run.method = job.classifier ? Method::Hybrid : Method::HybridGeometric;
   run.hybrid = options.hybrid;
-  run.hybrid.seed = options.seed * 0x9e3779b97f4a7c15ull +
-                    (alphaIndex * 100003ull + static_cast<std::uint64_t>(track)) * 2 + (classifier ? 1 : 0);
+  run.hybrid.seed = layoutTrackSeed(options.seed, job.layout) * 0x9e3779b97f4a7c15ull +
+                    (job.alphaIndex * 100003ull + static_cast<std::uint64_t>(job.track)) * 2 + (job.classifier ? 1 : 0);
   run.runFolder = false;
   const MethodRun out = runMethod(log, run);
 
   HybridStudyRow row;
+  row.layout = static_cast<int>(job.layout);
   row.alpha = scenario.alpha;
-  row.model = classifier ? "classifier" : "geometric";
-  row.track = track;
+  row.model = job.classifier ? "classifier" : "geometric";
+  row.track = job.track;
   const HybridMarginals& last = out.hybridSteps.back().marginals;
+  const SE2& truth = std::get<SE2>(*log.steps.back().truePose);
   const HypothesisMetrics metrics = evaluateHypotheses(last.components, log.steps.back().truePose);
   row.entropy = metrics.entropy;
   row.detCov = metrics.detCovariance;
@@ -53,8 +80,13 @@ HybridStudyRow runOne(const HybridStudyOptions& options, std::size_t alphaIndex,
   row.errWavg = metrics.errorWeightedAverage;
   row.ess = metrics.ess;
   row.components = static_cast<int>(last.components.size());
-  row.finalNees = poseNees(std::get<SE2>(out.result.poses.back()), std::get<SE2>(*log.steps.back().truePose),
-                           out.result.poseCovariances.back());
+  // The run's trajectory is the heaviest component's (hybrid/HybridRun.h); the first of equal weights, as there.
+  row.finalNees = poseNees(std::get<SE2>(out.result.poses.back()), truth, out.result.poseCovariances.back());
+  const auto heaviest = std::max_element(
+      last.components.begin(), last.components.end(),
+      [](const HypothesisComponent& a, const HypothesisComponent& b) { return a.weight < b.weight; });
+  row.heaviestComponentCorrect = historyIsTrue(heaviest->associations, log);
+  row.mixtureNees = mixtureNees(last.components, truth);
   const int step = std::min<int>(options.disambiguationStep, static_cast<int>(out.hybridSteps.size()) - 1);
   row.assocWeightAtStep = out.result.heaviestAssociationWeights[step];
   row.disambiguatedAtStep = row.assocWeightAtStep > 0.9;
@@ -75,19 +107,47 @@ HybridStudyRow runOne(const HybridStudyOptions& options, std::size_t alphaIndex,
   return row;
 }
 
+/// The finite NEES values of the rows selected by `keep`.
+template <class Keep>
+std::vector<double> finiteNees(const std::vector<const HybridStudyRow*>& rows, double HybridStudyRow::*member,
+                               Keep keep) {
+  std::vector<double> values;
+  for (const HybridStudyRow* r : rows) {
+    if (r->error.empty() && keep(*r) && std::isfinite(r->*member)) values.push_back(r->*member);
+  }
+  return values;
+}
+
 }  // namespace
 
+std::vector<Aliased2dScenario> generatedHybridStudyLayouts(std::uint64_t firstSeed, int count) {
+  if (count < 1) throw std::invalid_argument("hybrid study: needs at least one layout");
+  std::vector<Aliased2dScenario> layouts;
+  for (int i = 0; i < count; ++i) layouts.push_back(generatedAliased2dScenario(firstSeed + static_cast<std::uint64_t>(i)));
+  return layouts;
+}
+
+std::uint64_t layoutTrackSeed(std::uint64_t seed, std::size_t layout) {
+  // splitmix64 (Steele, Lea and Flood, "Fast splittable pseudorandom number generators", OOPSLA 2014) of the pair.
+  std::uint64_t z = seed + 0x9e3779b97f4a7c15ull * (static_cast<std::uint64_t>(layout) + 1);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return z ^ (z >> 31);
+}
+
 std::vector<HybridStudyRun> hybridStudyRuns(const HybridStudyOptions& options) {
-  if (options.tracks < 1 || options.steps < 1 || options.alphas.empty()) {
-    throw std::invalid_argument("hybrid study: needs at least one track, one step and one alpha");
+  if (options.layouts.empty() || options.tracks < 1 || options.steps < 1 || options.alphas.empty()) {
+    throw std::invalid_argument("hybrid study: needs at least one layout, one track, one step and one alpha");
   }
-  validateAliased2dScenario(options.scenario);
+  for (const Aliased2dScenario& layout : options.layouts) validateAliased2dScenario(layout);
   options.hybrid.validate();
   std::vector<HybridStudyRun> runs;
-  for (std::size_t a = 0; a < options.alphas.size(); ++a) {
-    for (int t = 0; t < options.tracks; ++t) {
-      runs.push_back({a, t, true});
-      runs.push_back({a, t, false});
+  for (std::size_t l = 0; l < options.layouts.size(); ++l) {
+    for (std::size_t a = 0; a < options.alphas.size(); ++a) {
+      for (int t = 0; t < options.tracks; ++t) {
+        runs.push_back({l, a, t, true});
+        runs.push_back({l, a, t, false});
+      }
     }
   }
   return runs;
@@ -95,14 +155,15 @@ std::vector<HybridStudyRun> hybridStudyRuns(const HybridStudyOptions& options) {
 
 HybridStudyRow runHybridStudyRun(const HybridStudyOptions& options, const HybridStudyRun& run) {
   try {
-    return runOne(options, run.alphaIndex, run.track, run.classifier);
+    return runOne(options, run);
   } catch (const std::exception& error) {
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
     HybridStudyRow row;
+    row.layout = static_cast<int>(run.layout);
     row.alpha = options.alphas[run.alphaIndex];
     row.model = run.classifier ? "classifier" : "geometric";
     row.track = run.track;
-    row.entropy = row.detCov = row.errWmax = row.errWavg = row.ess = row.finalNees = nan;
+    row.entropy = row.detCov = row.errWmax = row.errWavg = row.ess = row.finalNees = row.mixtureNees = nan;
     row.assocWeightAtStep = row.gateLostMass = row.analyticTotalVariation = row.samplingSeconds = row.seconds = nan;
     row.error = error.what();
     return row;
@@ -124,64 +185,89 @@ int failedHybridRuns(const std::vector<HybridStudyRow>& rows) {
       std::count_if(rows.begin(), rows.end(), [](const HybridStudyRow& row) { return !row.error.empty(); }));
 }
 
-void writeHybridStudy(const std::string& directory, const std::vector<HybridStudyRow>& rows,
-                      const StudyLayout& layout) {
+void writeHybridStudy(const std::string& directory, const HybridStudyOptions& options,
+                      const std::vector<HybridStudyRow>& rows, const StudyLayout& jobs) {
   std::filesystem::create_directories(directory);
   const std::filesystem::path dir(directory);
   writeFileAtomically((dir / "runs.csv").string(), [&](std::ostream& out) {
-    out << "alpha,model,track,entropy,det_cov,err_wmax,err_wavg,ess,components,final_nees,assoc_weight_at_step,"
-           "disambiguated_at_step,heaviest_history_correct,gate_lost_mass,analytic_total_variation,"
-           "sampled_candidates\n";
+    out << "layout,alpha,model,track,entropy,det_cov,err_wmax,err_wavg,ess,components,final_nees,"
+           "heaviest_component_correct,mixture_nees,assoc_weight_at_step,disambiguated_at_step,"
+           "heaviest_history_correct,gate_lost_mass,analytic_total_variation,sampled_candidates\n";
     for (const HybridStudyRow& r : rows) {
-      out << seventeenDigitNumber(r.alpha) << ',' << r.model << ',' << r.track << ',' << seventeenDigitNumber(r.entropy) << ','
-          << seventeenDigitNumber(r.detCov) << ',' << seventeenDigitNumber(r.errWmax) << ',' << seventeenDigitNumber(r.errWavg) << ','
+      out << r.layout << ',' << seventeenDigitNumber(r.alpha) << ',' << r.model << ',' << r.track << ','
+          << seventeenDigitNumber(r.entropy) << ',' << seventeenDigitNumber(r.detCov) << ','
+          << seventeenDigitNumber(r.errWmax) << ',' << seventeenDigitNumber(r.errWavg) << ','
           << seventeenDigitNumber(r.ess) << ',' << r.components << ',' << seventeenDigitNumber(r.finalNees) << ','
+          << (r.heaviestComponentCorrect ? 1 : 0) << ',' << seventeenDigitNumber(r.mixtureNees) << ','
           << seventeenDigitNumber(r.assocWeightAtStep) << ',' << (r.disambiguatedAtStep ? 1 : 0) << ','
           << (r.heaviestHistoryCorrect ? 1 : 0) << ',' << seventeenDigitNumber(r.gateLostMass) << ','
           << seventeenDigitNumber(r.analyticTotalVariation) << ',' << r.sampledCandidates << '\n';
     }
   });
-  writeFileAtomically((dir / "timings.csv").string(), [&](std::ostream& out) {
-    out << "alpha,model,track,rank,sampling_s,time_s,threads,ranks,wall_time_s\n";
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-      const HybridStudyRow& r = rows[i];
-      out << seventeenDigitNumber(r.alpha) << ',' << r.model << ',' << r.track << ',' << layout.rankOf(i) << ','
-          << seventeenDigitNumber(r.samplingSeconds) << ',' << seventeenDigitNumber(r.seconds) << ','
-          << layout.threads << ',' << layout.ranks << ',' << seventeenDigitNumber(layout.wallSeconds) << '\n';
+  std::filesystem::create_directories(dir / "layouts");
+  writeFileAtomically((dir / "layouts.csv").string(), [&](std::ostream& out) {
+    out << "layout,name,objects\n";
+    for (std::size_t l = 0; l < options.layouts.size(); ++l) {
+      out << l << ',' << csvField(options.layouts[l].name) << ',' << options.layouts[l].objects.size() << '\n';
     }
   });
-  // Means over tracks, in the order of first appearance of (alpha, model).
+  for (std::size_t l = 0; l < options.layouts.size(); ++l) {
+    writeAliased2dScenario((dir / "layouts" / ("layout_" + std::to_string(l) + ".json")).string(), options.layouts[l]);
+  }
+  writeFileAtomically((dir / "timings.csv").string(), [&](std::ostream& out) {
+    out << "layout,alpha,model,track,rank,sampling_s,time_s,threads,ranks,wall_time_s\n";
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const HybridStudyRow& r = rows[i];
+      out << r.layout << ',' << seventeenDigitNumber(r.alpha) << ',' << r.model << ',' << r.track << ','
+          << jobs.rankOf(i) << ',' << seventeenDigitNumber(r.samplingSeconds) << ','
+          << seventeenDigitNumber(r.seconds) << ',' << jobs.threads << ',' << jobs.ranks << ','
+          << seventeenDigitNumber(jobs.wallSeconds) << '\n';
+    }
+  });
+  // Means over layouts and tracks, in the order of first appearance of (alpha, model); failed runs left out.
   std::vector<std::pair<double, std::string>> order;
   std::map<std::pair<double, std::string>, std::vector<const HybridStudyRow*>> groups;
   for (const HybridStudyRow& r : rows) {
     const auto key = std::make_pair(r.alpha, r.model);
     if (!groups.count(key)) order.push_back(key);
-    groups[key].push_back(&r);
+    if (r.error.empty()) groups[key].push_back(&r);
   }
   writeFileAtomically((dir / "summary.csv").string(), [&](std::ostream& out) {
-    out << "alpha,model,entropy,det_cov,err_wmax,err_wavg\n";
+    out << "alpha,model,entropy,det_cov,err_wmax,err_wavg,heaviest_correct\n";
     for (const auto& key : order) {
       const auto& group = groups[key];
-      double e = 0, d = 0, m = 0, a = 0;
+      double e = 0, d = 0, m = 0, a = 0, c = 0;
       for (const HybridStudyRow* r : group) {
         e += r->entropy;
         d += r->detCov;
         m += r->errWmax;
         a += r->errWavg;
+        c += r->heaviestHistoryCorrect ? 1.0 : 0.0;
       }
       const double n = static_cast<double>(group.size());
-      out << seventeenDigitNumber(key.first) << ',' << key.second << ',' << seventeenDigitNumber(e / n) << ',' << seventeenDigitNumber(d / n)
-          << ',' << seventeenDigitNumber(m / n) << ',' << seventeenDigitNumber(a / n) << '\n';
+      out << seventeenDigitNumber(key.first) << ',' << key.second << ',' << seventeenDigitNumber(e / n) << ','
+          << seventeenDigitNumber(d / n) << ',' << seventeenDigitNumber(m / n) << ',' << seventeenDigitNumber(a / n)
+          << ',' << seventeenDigitNumber(c / n) << '\n';
     }
   });
   writeFileAtomically((dir / "nees.csv").string(), [&](std::ostream& out) {
-    out << "alpha,model,nees_mean,count,lower,upper\n";
+    out << "alpha,model,subset,nees_mean,count,lower,upper\n";
+    const auto all = [](const HybridStudyRow&) { return true; };
+    const auto correct = [](const HybridStudyRow& r) { return r.heaviestComponentCorrect; };
+    const auto wrong = [](const HybridStudyRow& r) { return !r.heaviestComponentCorrect; };
     for (const auto& key : order) {
-      std::vector<double> values;
-      for (const HybridStudyRow* r : groups[key]) values.push_back(r->finalNees);
-      const NeesSummary s = summarizeNees(values, 3);
-      out << seventeenDigitNumber(key.first) << ',' << key.second << ',' << seventeenDigitNumber(s.mean) << ',' << s.count << ','
-          << seventeenDigitNumber(s.lower) << ',' << seventeenDigitNumber(s.upper) << '\n';
+      const auto& group = groups[key];
+      const std::pair<const char*, std::vector<double>> subsets[] = {
+          {"heaviest", finiteNees(group, &HybridStudyRow::finalNees, all)},
+          {"heaviest_correct", finiteNees(group, &HybridStudyRow::finalNees, correct)},
+          {"heaviest_wrong", finiteNees(group, &HybridStudyRow::finalNees, wrong)},
+          {"mixture", finiteNees(group, &HybridStudyRow::mixtureNees, all)}};
+      for (const auto& [subset, values] : subsets) {
+        const NeesSummary s = summarizeNees(values, 3);
+        out << seventeenDigitNumber(key.first) << ',' << key.second << ',' << subset << ','
+            << seventeenDigitNumber(s.mean) << ',' << s.count << ',' << seventeenDigitNumber(s.lower) << ','
+            << seventeenDigitNumber(s.upper) << '\n';
+      }
     }
   });
 }

@@ -105,12 +105,15 @@ void expectEnd(const ByteReader& in) {
 
 std::string encodeHybridStudyRow(const HybridStudyRow& row) {
   ByteWriter out;
+  out.value(row.layout);
   out.value(row.alpha);
   out.text(row.model);
   out.value(row.track);
   for (double v : {row.entropy, row.detCov, row.errWmax, row.errWavg, row.ess}) out.value(v);
   out.value(row.components);
   out.value(row.finalNees);
+  out.value(row.heaviestComponentCorrect);
+  out.value(row.mixtureNees);
   out.value(row.assocWeightAtStep);
   out.value(row.disambiguatedAtStep);
   out.value(row.heaviestHistoryCorrect);
@@ -126,12 +129,15 @@ std::string encodeHybridStudyRow(const HybridStudyRow& row) {
 HybridStudyRow decodeHybridStudyRow(const std::string& bytes) {
   ByteReader in(bytes);
   HybridStudyRow row;
+  row.layout = in.value<int>();
   row.alpha = in.value<double>();
   row.model = in.text();
   row.track = in.value<int>();
   for (double* v : {&row.entropy, &row.detCov, &row.errWmax, &row.errWavg, &row.ess}) *v = in.value<double>();
   row.components = in.value<int>();
   row.finalNees = in.value<double>();
+  row.heaviestComponentCorrect = in.value<bool>();
+  row.mixtureNees = in.value<double>();
   row.assocWeightAtStep = in.value<double>();
   row.disambiguatedAtStep = in.value<bool>();
   row.heaviestHistoryCorrect = in.value<bool>();
