@@ -1,10 +1,11 @@
 // semslam_bench: our solvers and Ceres on the standard pose graphs, then the ratio table (RatioTable.h); one step
-// of the hybrid belief with each weight method (HybridStepBenchmark.h); a mixture-heavy mm-nh run on each back end
-// (MixtureRunBenchmark.h).
+// of the hybrid belief with each weight method (HybridStepBenchmark.h); paper A's whole study on one layout
+// (HybridStudyBenchmark.h); a mixture-heavy mm-nh run on each back end (MixtureRunBenchmark.h).
 //
 //   semslam_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true   (what `make bench` runs)
 //   semslam_bench --benchmark_filter=manhattan                                       (one dataset)
 //   semslam_bench --benchmark_filter=HybridStep                                      (the hybrid step)
+//   semslam_bench --benchmark_filter=HybridStudy                                     (paper A's study)
 //   semslam_bench --benchmark_filter=MixtureRun                                      (mm-nh on both back ends)
 
 #include <benchmark/benchmark.h>
@@ -13,6 +14,7 @@
 
 #include "Datasets.h"
 #include "HybridStepBenchmark.h"
+#include "HybridStudyBenchmark.h"
 #include "MixtureRunBenchmark.h"
 #include "RatioTable.h"
 #include "SemslamSolverBenchmarks.h"
@@ -31,6 +33,7 @@ int main(int argc, char** argv) {
 #endif
   }
   semslam::bench::registerHybridStepBenchmarks();
+  semslam::bench::registerHybridStudyBenchmarks();
   semslam::bench::registerMixtureRunBenchmarks();
 #ifndef SEMSLAM_BENCH_HAVE_CERES
   std::printf("semslam_bench was built without Ceres (find_package(Ceres) failed): our solvers only\n");

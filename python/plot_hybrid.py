@@ -9,7 +9,7 @@
       `semslam run --method hybrid|hybrid-geometric` on the same log.
   plot_hybrid.py fig5 STUDY_DIR [--out docs/figures/hybrid_fig5.png]
       The analog of Fig. 5: the four metrics at the final step against alpha, mean over layouts and tracks with the
-      stratified bootstrap 95 % interval of the mean (det Sigma on a log axis).
+      stratified bootstrap 95 % interval of the mean (det Sigma: geometric mean, on a log axis).
   plot_hybrid.py analyze STUDY_DIR [--alpha 0.25]
       Paired differences (classifier - geometric) per layout and pooled: stratified paired bootstrap 95 % interval,
       one-sided Wilcoxon signed-rank p-value, on how many layouts each metric separates (python/paired_statistics.py);
@@ -149,15 +149,19 @@ def fig5(study, out):
     fig, axes = plt.subplots(1, 4, figsize=(16, 3.8))
     for ax, (metric, title) in zip(axes, METRICS):
         for model, color in (("geometric", "tab:blue"), ("classifier", "tab:red")):
-            stats = [mean_interval([[r[metric] for r in rows if r["alpha"] == a and r["model"] == model and
-                                     r["layout"] == layout and math.isfinite(r[metric])] for layout in layouts])
+            # det Sigma spans orders of magnitude (a track that never sees an object keeps the 10 m prior), so its
+            # panel shows the geometric mean: the interval of the mean of log det Sigma, exponentiated.
+            transform, back = (math.log, math.exp) if metric == "det_cov" else (float, float)
+            stats = [mean_interval([[transform(r[metric]) for r in rows if r["alpha"] == a and r["model"] == model
+                                     and r["layout"] == layout and math.isfinite(r[metric])] for layout in layouts])
                      for a in alphas]
+            stats = [{key: back(s[key]) for key in ("mean", "ci_low", "ci_high")} for s in stats]
             ms = [s["mean"] for s in stats]
             err = [[s["mean"] - s["ci_low"] for s in stats], [s["ci_high"] - s["mean"] for s in stats]]
             ax.errorbar(alphas, ms, yerr=err, color=color, marker="o", capsize=3,
                         label="with classifier model" if model == "classifier" else "geometric only")
         ax.set_xlabel("alpha (classifier viewpoint dependency, A eq. 18)")
-        ax.set_title(title)
+        ax.set_title(title + (" (geometric mean)" if metric == "det_cov" else ""))
         if metric == "det_cov":
             ax.set_yscale("log")
         ax.grid(alpha=0.3)

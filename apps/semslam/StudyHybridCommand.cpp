@@ -29,6 +29,7 @@ struct StudyHybridArguments {
   std::vector<std::string> scenarios;  ///< scenario files, a layout each; empty: generated layouts
   int layouts = 10;                    ///< generated layouts (without --scenario)
   std::uint64_t layoutSeed = 1;        ///< the first generated layout's seed
+  std::string poseMean;                ///< "start" | "sampled": replaces every layout's pose prior mean; empty: kept
   std::string out;
   bool overwrite = false;
   bool quiet = false;
@@ -42,6 +43,11 @@ void runStudy(StudyHybridArguments arguments) {
   } else {
     options.layouts.clear();
     for (const std::string& path : arguments.scenarios) options.layouts.push_back(readAliased2dScenario(path));
+  }
+  if (!arguments.poseMean.empty()) {
+    for (Aliased2dScenario& layout : options.layouts) {
+      layout.priors.poseMean = arguments.poseMean == "start" ? PoseMean::Start : PoseMean::Sampled;
+    }
   }
   for (double a : options.alphas) {
     if (!(a >= 0.0 && a <= 1.0)) throw InputError("--alpha: every alpha must be in [0, 1]");
@@ -102,6 +108,10 @@ void addStudyHybridCommand(CLI::App& study) {
       ->check(unsignedInteger64())
       ->capture_default_str()
       ->excludes(scenario);
+  hybrid->add_option("--pose-mean", arguments->poseMean,
+                     "the estimator's prior mean of the first pose in every layout: start (paper A: the true start) "
+                     "or sampled (drawn from the prior; docs/simulators.md); default: each layout's own")
+      ->check(CLI::IsMember({"start", "sampled"}));
   hybrid->add_option("--tracks", o.tracks, "tracks per layout and alpha")->check(CLI::Range(1, 100000))->capture_default_str();
   hybrid->add_option("--steps", o.steps, "steps per track")->check(CLI::Range(1, 100000))->capture_default_str();
   hybrid->add_option("--alpha", o.alphas, "classifier viewpoint dependencies, comma separated")

@@ -204,9 +204,12 @@ TEST(StudyCommand, HybridStudyTakesScenarioFilesAsLayoutsButNotWithGeneratedOnes
   semslam::writeAliased2dScenario((dir / "b.json").string(), semslam::generatedAliased2dScenario(3));
   const std::string files = " --scenario \"" + (dir / "a.json").string() + "\" --scenario \"" +
                             (dir / "b.json").string() + "\"";
-  const auto both = runSemslam("study hybrid --tracks 1 --steps 2 --alpha 0.25 --samples 20 --quiet" + files +
-                               " --out \"" + (dir / "study").string() + "\"");
+  const auto both = runSemslam("study hybrid --tracks 1 --steps 2 --alpha 0.25 --samples 20 --quiet --pose-mean "
+                               "sampled" + files + " --out \"" + (dir / "study").string() + "\"");
   ASSERT_EQ(both.exitCode, 0) << both.output;
+  // --pose-mean replaces every layout's prior mean of the first pose, and the written layouts say so.
+  EXPECT_EQ(semslam::readAliased2dScenario((dir / "study" / "layouts" / "layout_0.json").string()).priors.poseMean,
+            semslam::PoseMean::Sampled);
   std::ifstream layouts(dir / "study" / "layouts.csv");
   std::string line;
   std::getline(layouts, line);
