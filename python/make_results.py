@@ -17,6 +17,7 @@ import tempfile
 
 import results_association
 import results_association_defaults
+import results_hybrid_mrclam
 import results_kitti_tracking
 import results_max_mixtures
 import results_studies_mpi
@@ -174,13 +175,15 @@ def hybrid_study_lines(title, command, output, analysis, data, out):
                      f"(per layout, %: {per_layout}); one history > 0.9 at step 5 in {100 * d['fraction']:.0f} %; "
                      f"final-pose NEES: " + "; ".join(parts) + ".")
     lines.append(f"- largest gate lost mass per run: {a['gate_lost_mass_max']:.3g}; sampled-vs-linearised total "
-                 f"variation of the weights (mean over steps and runs): {a['sampled_vs_analytic_total_variation']:.3g}; "
+                 "variation of the weights (mean over steps and runs): "
+                 f"{a['sampled_vs_analytic_total_variation']:.3g}; "
                  f"{a['sampled_candidates']:.0f} weights sampled in {a['sampling_s']:.2f} s of sampling (thread time), "
                  f"total run time {a['run_s_total']:.1f} s (thread time).")
     if "entropy_slope" in a:
         e = a["entropy_slope"]
+        side = "below zero" if e["below_zero"] else "not below zero"
         lines.append(f"- paired slope of the classifier's entropy against alpha {e['mean']:.4g}, 95 % bootstrap CI "
-                     f"[{e['ci_low']:.4g}, {e['ci_high']:.4g}] ({'below zero' if e['below_zero'] else 'not below zero'}).")
+                     f"[{e['ci_low']:.4g}, {e['ci_high']:.4g}] ({side}).")
     return lines + [""]
 
 
@@ -319,8 +322,8 @@ def bounded_memory_lines(semslam, data, scratch, litw):
             "said:", "", "```", note, "```", ""]
 
 
-SECTIONS = ["pose-graphs", "evo", "datasets", "hybrid", "max-mixtures", "robustness", "association",
-            "association-defaults", "kitti-tracking", "studies-mpi"]
+SECTIONS = ["pose-graphs", "evo", "datasets", "hybrid", "hybrid-mrclam", "max-mixtures", "robustness",
+            "association", "association-defaults", "kitti-tracking", "studies-mpi"]
 
 
 def section_lines(name, semslam, data, scratch):
@@ -345,6 +348,8 @@ def section_lines(name, semslam, data, scratch):
     elif name == "kitti-tracking":
         body = results_kitti_tracking.kitti_tracking_section(semslam, data, scratch,
                                                              lambda command: shown(command, data), sys.executable)
+    elif name == "hybrid-mrclam":
+        body = results_hybrid_mrclam.hybrid_mrclam_section(semslam, data, scratch, lambda command: shown(command, data))
     elif name == "studies-mpi":
         body = results_studies_mpi.studies_mpi_section(semslam, data, scratch, lambda command: shown(command, data))
     else:

@@ -76,6 +76,7 @@ def compare(groups, seed=1):
         result.update(signed_rank(groups[name]))
         result["separates"] = excludes_zero(result)
         layouts[name] = result
-        same_side = (result["ci_high"] < 0.0 and pooled["mean"] < 0.0) or (result["ci_low"] > 0.0 and pooled["mean"] > 0.0)
+        same_side = ((result["ci_high"] < 0.0 and pooled["mean"] < 0.0) or
+                     (result["ci_low"] > 0.0 and pooled["mean"] > 0.0))
         separating += 1 if same_side else 0
     return {"pooled": pooled, "layouts": layouts, "layouts_separating": separating}

@@ -112,7 +112,9 @@ void addStudyHybridCommand(CLI::App& study) {
                      "the estimator's prior mean of the first pose in every layout: start (paper A: the true start) "
                      "or sampled (drawn from the prior; docs/simulators.md); default: each layout's own")
       ->check(CLI::IsMember({"start", "sampled"}));
-  hybrid->add_option("--tracks", o.tracks, "tracks per layout and alpha")->check(CLI::Range(1, 100000))->capture_default_str();
+  hybrid->add_option("--tracks", o.tracks, "tracks per layout and alpha")
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
   hybrid->add_option("--steps", o.steps, "steps per track")->check(CLI::Range(1, 100000))->capture_default_str();
   hybrid->add_option("--alpha", o.alphas, "classifier viewpoint dependencies, comma separated")
       ->delimiter(',')

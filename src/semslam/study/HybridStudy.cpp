@@ -62,7 +62,8 @@ HybridStudyRow runOne(const HybridStudyOptions& options, const HybridStudyRun& j
   run.method = job.classifier ? Method::Hybrid : Method::HybridGeometric;
   run.hybrid = options.hybrid;
   run.hybrid.seed = layoutTrackSeed(options.seed, job.layout) * 0x9e3779b97f4a7c15ull +
-                    (job.alphaIndex * 100003ull + static_cast<std::uint64_t>(job.track)) * 2 + (job.classifier ? 1 : 0);
+                    (job.alphaIndex * 100003ull + static_cast<std::uint64_t>(job.track)) * 2 +
+                    (job.classifier ? 1 : 0);
   run.runFolder = false;
   const MethodRun out = runMethod(log, run);
 
@@ -123,7 +124,9 @@ std::vector<double> finiteNees(const std::vector<const HybridStudyRow*>& rows, d
 std::vector<Aliased2dScenario> generatedHybridStudyLayouts(std::uint64_t firstSeed, int count) {
   if (count < 1) throw std::invalid_argument("hybrid study: needs at least one layout");
   std::vector<Aliased2dScenario> layouts;
-  for (int i = 0; i < count; ++i) layouts.push_back(generatedAliased2dScenario(firstSeed + static_cast<std::uint64_t>(i)));
+  for (int i = 0; i < count; ++i) {
+    layouts.push_back(generatedAliased2dScenario(firstSeed + static_cast<std::uint64_t>(i)));
+  }
   return layouts;
 }
 
