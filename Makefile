@@ -7,7 +7,8 @@
 #   make bench    build and run the benchmarks (installs libceres-dev for the Ceres comparison), then the
 #                 incremental replay benchmark and the candidate pre-selection benchmark
 #   make fuzz     build the libFuzzer harnesses of fuzz/ with clang-14 (installs clang-14 and libclang-rt-14-dev),
-#                 run each FUZZ_SECONDS seconds (default 60) and print executions, exec/s, corpus size and findings
+#                 run each FUZZ_SECONDS seconds (default 60; FUZZ_ONLY=a,b: only those) and print executions,
+#                 exec/s, corpus size and findings
 #   make results  regenerate the measured results in docs/results.md
 #   make install  build, then install under PREFIX (default /usr/local; sudo only when PREFIX is not writable):
 #                 bin/semslam, include/semslam, lib/libsemslam.a, lib/cmake/semslam (find_package(semslam)),
@@ -26,6 +27,8 @@ DEB_PACKAGES := build-essential cmake pkg-config libeigen3-dev libsuitesparse-de
 BENCH_PACKAGES := libbenchmark-dev libceres-dev
 FUZZ_PACKAGES := clang-14 libclang-rt-14-dev
 FUZZ_SECONDS ?= 60
+# Empty: every harness; else a comma-separated list of them (FUZZ_ONLY=log,metrics).
+FUZZ_ONLY ?=
 FUZZ_HARNESSES := $(notdir $(wildcard fuzz/corpus/*))
 
 # Installs each named package that dpkg does not report as installed; `apt-get update` first, since a fresh
@@ -79,7 +82,8 @@ fuzz: deps-fuzz
 	  -DSEMSLAM_BUILD_TESTS=OFF -DSEMSLAM_BUILD_EXAMPLES=OFF -DSEMSLAM_BUILD_BENCH=OFF -DSEMSLAM_BUILD_FUZZ=ON \
 	  "-DCMAKE_CXX_FLAGS=-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all"
 	cmake --build $(BUILD_DIR)-fuzz -j $(JOBS) --target $(addprefix fuzz_,$(FUZZ_HARNESSES))
-	$(PYTHON) fuzz/run_fuzzers.py --bin $(BUILD_DIR)-fuzz/bin --seconds $(FUZZ_SECONDS) --work $(BUILD_DIR)-fuzz/work
+	$(PYTHON) fuzz/run_fuzzers.py --bin $(BUILD_DIR)-fuzz/bin --seconds $(FUZZ_SECONDS) --work $(BUILD_DIR)-fuzz/work \
+	  $(if $(FUZZ_ONLY),--only $(FUZZ_ONLY))
 
 results: build
 	$(PYTHON) python/make_results.py --build $(BUILD_DIR)
