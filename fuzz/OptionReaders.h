@@ -6,7 +6,7 @@
 //
 // The contract: CLI11 refuses the values with a CLI::ParseError (rethrown as InputError: `semslam` exits 2 with
 // it), or accepts them and each value is what its text says: a seed or count equal to the decimal number written
-// (no saturation at 2^64 - 1, no "-5" wrapped around), an integer inside its range, a positive or non-negative
+// (no saturation at 2^64 - 1, no "-5" wrapped around, no "0467" read as octal 311), an integer inside its range, a positive or non-negative
 // number that is so. Anything else (another exception, a value other than its text) is a finding.
 
 #include <cstdint>
@@ -61,6 +61,7 @@ inline void parseNumericOptions(const std::string& path) {
   app.add_option("--delta", delta)->check(CLI::PositiveNumber);
   app.add_option("--scale", scale)->check(CLI::NonNegativeNumber);
   app.add_option("--sigmas", sigmas)->delimiter(',');
+  cli::requireDecimalIntegers(app);  // as the tool's main.cpp does
   std::vector<std::string> arguments;  // CLI11 takes them in reverse order
   for (std::size_t k = values.size(); k-- > 0;) {
     arguments.push_back(values[k]);
@@ -74,6 +75,10 @@ inline void parseNumericOptions(const std::string& path) {
   if (values.size() > 0) detail::require(std::to_string(seed) == detail::canonicalDigits(values[0]), "--seed");
   if (values.size() > 1) detail::require(std::to_string(maxSteps) == detail::canonicalDigits(values[1]), "--max-steps");
   detail::require(steps >= 0 && steps <= 1000000, "--steps");
+  if (values.size() > 2 && values[2].find_first_not_of("+0123456789") == std::string::npos && values[2].size() > 0) {
+    const std::string digits = values[2][0] == '+' ? values[2].substr(1) : values[2];
+    detail::require(std::to_string(steps) == detail::canonicalDigits(digits), "--steps");
+  }
   detail::require(classes >= 1 && classes <= 2048, "--classes");
   detail::require(!(delta <= 0.0), "--delta");
   detail::require(!(scale < 0.0), "--scale");

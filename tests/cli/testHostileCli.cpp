@@ -56,6 +56,18 @@ TEST(HostileCli, CountsOutOfTheirRangeAreRefused) {
                 "2^64 - 1");
 }
 
+TEST(HostileCli, IntegersAreDecimalNeverOctalOrHexadecimal) {
+  // CLI11 reads integers with strtoll(..., 0): "--seed 0467" became seed 311 and "--steps 010" 8 steps, silently
+  // (found by the options fuzz harness).
+  const semslam::test::TempDir scratch;
+  const CommandResult ok = runSemslam("simulate semantic --seed 0467 --steps 010 --out " + scratch.path("a.jsonl"));
+  EXPECT_EQ(ok.exitCode, 0) << ok.output;
+  EXPECT_NE(ok.output.find("(10 steps of 1 m"), std::string::npos) << ok.output;
+  EXPECT_NE(ok.output.find("seed 467)"), std::string::npos) << ok.output;
+  expectRefused(runSemslam("simulate semantic --steps 0x10 --out " + scratch.path("b.jsonl")), "decimal whole number");
+  expectRefused(runSemslam("simulate semantic --seed 0x10 --out " + scratch.path("b.jsonl")), "--seed");
+}
+
 TEST(HostileCli, AHugeRpeDeltaIsRefusedQuickly) {
   // The delta was cast to size_t: 1e300 grew past 7.8 GB.
   const semslam::test::TempDir scratch;
