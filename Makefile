@@ -7,7 +7,11 @@
 #   make bench    build and run the benchmarks (installs libceres-dev for the Ceres comparison), then the
 #                 incremental replay benchmark and the candidate pre-selection benchmark
 #   make fuzz     build the libFuzzer harnesses of fuzz/ with clang-14 (installs clang-14 and libclang-rt-14-dev),
-#                 run each FUZZ_SECONDS seconds (default 60) and print executions, exec/s, corpus size and findings
+#                 run each FUZZ_SECONDS seconds (default 60; FUZZ_ONLY=a,b: only those) and print executions,
+#                 exec/s, corpus size and findings
+#   make sanitize build the library, the tool and every C++ test with -fsanitize=address,undefined
+#                 -fno-sanitize-recover=all -D_GLIBCXX_ASSERTIONS into build-sanitize/ (MPI and the Python tests
+#                 off) and run them through ctest; any sanitizer report fails its test
 #   make results  regenerate the measured results in docs/results.md
 #   make install  build, then install under PREFIX (default /usr/local; sudo only when PREFIX is not writable):
 #                 bin/semslam, include/semslam, lib/libsemslam.a, lib/cmake/semslam (find_package(semslam)),
@@ -26,6 +30,8 @@ DEB_PACKAGES := build-essential cmake pkg-config libeigen3-dev libsuitesparse-de
 BENCH_PACKAGES := libbenchmark-dev libceres-dev
 FUZZ_PACKAGES := clang-14 libclang-rt-14-dev
 FUZZ_SECONDS ?= 60
+# Empty: every harness; else a comma-separated list of them (FUZZ_ONLY=log,metrics).
+FUZZ_ONLY ?=
 FUZZ_HARNESSES := $(notdir $(wildcard fuzz/corpus/*))
 
 # Installs each named package that dpkg does not report as installed; `apt-get update` first, since a fresh
@@ -40,7 +46,7 @@ define install_missing
 	fi
 endef
 
-.PHONY: deps deps-bench deps-fuzz configure build test demo bench fuzz results install clean
+.PHONY: deps deps-bench deps-fuzz configure build test demo bench fuzz sanitize results install clean
 
 deps:
 	$(call install_missing,$(DEB_PACKAGES))
@@ -79,7 +85,23 @@ fuzz: deps-fuzz
 	  -DSEMSLAM_BUILD_TESTS=OFF -DSEMSLAM_BUILD_EXAMPLES=OFF -DSEMSLAM_BUILD_BENCH=OFF -DSEMSLAM_BUILD_FUZZ=ON \
 	  "-DCMAKE_CXX_FLAGS=-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all"
 	cmake --build $(BUILD_DIR)-fuzz -j $(JOBS) --target $(addprefix fuzz_,$(FUZZ_HARNESSES))
-	$(PYTHON) fuzz/run_fuzzers.py --bin $(BUILD_DIR)-fuzz/bin --seconds $(FUZZ_SECONDS) --work $(BUILD_DIR)-fuzz/work
+	$(PYTHON) fuzz/run_fuzzers.py --bin $(BUILD_DIR)-fuzz/bin --seconds $(FUZZ_SECONDS) --work $(BUILD_DIR)-fuzz/work \
+	  $(if $(FUZZ_ONLY),--only $(FUZZ_ONLY))
+
+# The library, the tool and the C++ tests with AddressSanitizer and UndefinedBehaviorSanitizer (every report is fatal)
+# and libstdc++'s assertions, in their own build folder. MPI off (OpenMPI's runtime is not built for ASan) and the
+# Python tests off (SEMSLAM_PYTHON_TESTS: they test scripts, not C++); the packaging tests are left out, since a
+# downstream program cannot link the sanitized library without the sanitizers' runtime.
+# -O1, as the sanitizers' documentation advises; -g1 for line numbers in their reports.
+SANITIZE_FLAGS := -O1 -g1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all \
+                  -D_GLIBCXX_ASSERTIONS
+sanitize: deps
+	cmake -S . -B $(BUILD_DIR)-sanitize -DCMAKE_BUILD_TYPE=None -DSEMSLAM_BUILD_BENCH=OFF -DSEMSLAM_WITH_MPI=OFF \
+	  -DSEMSLAM_PYTHON_TESTS=OFF "-DCMAKE_CXX_FLAGS=$(SANITIZE_FLAGS)" \
+	  "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined"
+	cmake --build $(BUILD_DIR)-sanitize -j $(JOBS)
+	ASAN_OPTIONS=detect_leaks=1:abort_on_error=0:halt_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	  ctest --test-dir $(BUILD_DIR)-sanitize --output-on-failure -j $(JOBS) -E '^packaging\.'
 
 results: build
 	$(PYTHON) python/make_results.py --build $(BUILD_DIR)
@@ -93,4 +115,4 @@ install: build
 	$$sudo cmake --install $(BUILD_DIR) --prefix "$(PREFIX)"
 
 clean:
-	rm -rf $(BUILD_DIR) $(BUILD_DIR)-bench $(BUILD_DIR)-fuzz
+	rm -rf $(BUILD_DIR) $(BUILD_DIR)-bench $(BUILD_DIR)-fuzz $(BUILD_DIR)-sanitize

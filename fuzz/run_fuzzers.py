@@ -21,8 +21,11 @@ def main():
     parser.add_argument("--bin", required=True)
     parser.add_argument("--seconds", type=int, default=60)
     parser.add_argument("--work", required=True)
+    parser.add_argument("--only", default="", help="comma-separated harnesses to run (default: every one)")
     arguments = parser.parse_args()
     harnesses = sorted(os.listdir(os.path.join(HERE, "corpus")))
+    if arguments.only:
+        harnesses = [h for h in harnesses if h in arguments.only.split(",")]
     rows, found = [], 0
     for harness in harnesses:
         work = os.path.join(arguments.work, harness)
@@ -45,9 +48,9 @@ def main():
         rows.append((harness, executions, executions // seconds, len(os.listdir(corpus)), len(new)))
         if result.returncode != 0:
             print(f"{harness}: exit {result.returncode}\n{result.stderr[-3000:]}", file=sys.stderr)
-    print(f"{'harness':10} {'executions':>12} {'exec/s':>8} {'corpus':>7} {'findings':>9}")
+    print(f"{'harness':22} {'executions':>12} {'exec/s':>8} {'corpus':>7} {'findings':>9}")
     for harness, executions, rate, corpus_size, findings_count in rows:
-        print(f"{harness:10} {executions:12d} {rate:8d} {corpus_size:7d} {findings_count:9d}")
+        print(f"{harness:22} {executions:12d} {rate:8d} {corpus_size:7d} {findings_count:9d}")
     return 1 if found else 0
 
 

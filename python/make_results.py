@@ -357,6 +357,19 @@ def section_lines(name, semslam, data, scratch):
     return [f"<!-- section:{name} -->"] + body + [f"<!-- end:{name} -->", ""]
 
 
+# Sections measured by other commands than this script (each section says which: `make fuzz` for hostile-input,
+# an hour and more of fuzzing): a full regeneration keeps them as they are in the existing file.
+KEPT_SECTIONS = ["hostile-input"]
+
+
+def kept_section(text, name):
+    """Section `name` of an existing results.md, markers included, as lines (empty when it has none)."""
+    begin, end = f"<!-- section:{name} -->", f"<!-- end:{name} -->"
+    if begin not in text or end not in text:
+        return []
+    return (begin + text.split(begin, 1)[1].split(end, 1)[0] + end).split("\n") + [""]
+
+
 def splice(text, name, lines):
     """Replaces section `name` of an existing results.md (or appends it)."""
     begin, end = f"<!-- section:{name} -->", f"<!-- end:{name} -->"
@@ -393,6 +406,9 @@ def main():
                      f"{datetime.date.today().isoformat()}.", ""]
             for name in SECTIONS:
                 lines += section_lines(name, semslam, data, scratch)
+            existing = open(args.out).read() if os.path.exists(args.out) else ""
+            for name in KEPT_SECTIONS:
+                lines += kept_section(existing, name)
             text = "\n".join(lines)
     with open(args.out + ".tmp", "w") as out:
         out.write(text)

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "Commands.h"
+#include "OptionValidators.h"
 #include "semslam/core/InputError.h"
 #include "semslam/io/convert/DatasetConverters.h"
 #include "semslam/io/MeasurementLogFile.h"
@@ -89,7 +90,9 @@ void addConvertCommand(CLI::App& app) {
       ->add_option("--keyframe-period", arguments->options.keyframePeriod,
                    "keep one step per period in seconds, composing the odometry in between (0: every step)")
       ->capture_default_str();
-  command->add_option("--max-steps", arguments->maxSteps, "keep the first N steps (0: all)")->capture_default_str();
+  command->add_option("--max-steps", arguments->maxSteps, "keep the first N steps (0: all)")
+      ->check(unsignedInteger64())  // CLI11 wraps "-5" around and saturates past 2^64 - 1
+      ->capture_default_str();
   command
       ->add_option("--initial-pose-sigma", arguments->initialPoseSigmas,
                    "standard deviations of the first-pose prior: sx,sy,stheta (3D: sx,sy,sz,srx,sry,srz); default "

@@ -76,6 +76,8 @@ void run(RunArguments arguments) {
     }
   } catch (const std::invalid_argument& error) {
     throw InputError(arguments.in, 0, error.what());
+  } catch (const std::domain_error& error) {  // a geometry the models cannot take (a point at its sensor)
+    throw InputError(arguments.in, 0, error.what());
   } catch (const UnconstrainedSystemError& error) {  // the log leaves a variable free: say what would hold it
     throw InputError(arguments.in, 0,
                      std::string(error.what()) +

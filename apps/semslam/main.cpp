@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "Commands.h"
+#include "OptionValidators.h"
 #include "semslam/core/InputError.h"
 #include "semslam/core/InputExcerpt.h"
 #include "semslam/core/Version.h"
@@ -27,6 +28,7 @@ int main(int argc, char** argv) {
   semslam::cli::addConvertCommand(app);
   semslam::cli::addRunCommand(app);
   semslam::cli::addStudyCommand(app);
+  semslam::cli::requireDecimalIntegers(app);  // CLI11 reads "010" as octal eight
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

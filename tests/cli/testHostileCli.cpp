@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "io/IoTesting.h"
 #include "support/RunCommand.h"
@@ -47,6 +48,24 @@ TEST(HostileCli, CountsOutOfTheirRangeAreRefused) {
                 "landmarks");
   expectRefused(runSemslam("run --method hybrid --samples 100000000 --in " + graph + " --out " + scratch.path("r")),
                 "--samples");
+  // A size_t option: CLI11 wrapped "-5" around to 2^64 - 5 and saturated past 2^64 - 1, silently.
+  const std::string isam = scratch.write("g.isam", "EDGE2 0 1 1 0 0 1 0 0 1 0 1\n");
+  expectRefused(runSemslam("convert isam " + isam + " --max-steps -5 --out " + scratch.path("m.jsonl")), "--max-steps");
+  expectRefused(runSemslam("convert isam " + isam + " --max-steps 99999999999999999999999 --out " +
+                           scratch.path("m.jsonl")),
+                "2^64 - 1");
+}
+
+TEST(HostileCli, IntegersAreDecimalNeverOctalOrHexadecimal) {
+  // CLI11 reads integers with strtoll(..., 0): "--seed 0467" became seed 311 and "--steps 010" 8 steps, silently
+  // (found by the options fuzz harness).
+  const semslam::test::TempDir scratch;
+  const CommandResult ok = runSemslam("simulate semantic --seed 0467 --steps 010 --out " + scratch.path("a.jsonl"));
+  EXPECT_EQ(ok.exitCode, 0) << ok.output;
+  EXPECT_NE(ok.output.find("(10 steps of 1 m"), std::string::npos) << ok.output;
+  EXPECT_NE(ok.output.find("seed 467)"), std::string::npos) << ok.output;
+  expectRefused(runSemslam("simulate semantic --steps 0x10 --out " + scratch.path("b.jsonl")), "decimal whole number");
+  expectRefused(runSemslam("simulate semantic --seed 0x10 --out " + scratch.path("b.jsonl")), "--seed");
 }
 
 TEST(HostileCli, AHugeRpeDeltaIsRefusedQuickly) {
@@ -81,6 +100,65 @@ TEST(HostileCli, NonFiniteResultsExitTwoNamingTheFileAndLine) {
   const CommandResult result = runSemslam("eval ate --json --est " + est + " --ref " + ref);
   expectRefused(result, est);
   EXPECT_EQ(result.output.find("null"), std::string::npos) << result.output;
+}
+
+// A two-step log (header, a first step, a second with odometry and a detection) whose second step's line is 3.
+std::string logWithSecondStep(const std::string& increment, const std::string& geometry) {
+  return R"({"format":"semslam-log","version":1,"dimension":2,"classes":3,"semantic":"label",)"
+         R"("classifier":{"kind":"categorical","misclassification":0.1},"sensor":{"kind":"range-bearing"},)"
+         R"("initial_pose":{"mean":[0,0,0],"covariance":[[1e-4,0,0],[0,1e-4,0],[0,0,1e-6]]}})"
+         "\n"
+         R"({"time":0,"detections":[{"geometry":[2,0.5],"covariance":[[0.01,0],[0,0.001]],"label":1,"truth":0}]})"
+         "\n"
+         R"({"time":1,"odometry":{"increment":)" + increment +
+         R"(,"covariance":[[0.01,0,0],[0,0.01,0],[0,0,0.001]]},"detections":[{"geometry":)" + geometry +
+         R"(,"covariance":[[0.01,0],[0,0.001]],"label":1,"truth":0}]})"
+         "\n";
+}
+
+TEST(HostileCli, FiniteButHugeNumbersInALogExitTwoNamingTheLine) {
+  // 1e308 in an odometry or a detection overflowed in the solver: exit 2 without a line, or exit 1
+  // ("range-bearing: the point is at the sensor") for a range of 1e-300.
+  const semslam::test::TempDir scratch;
+  const std::string good = scratch.write("good.jsonl", logWithSecondStep("[1,0,0.1]", "[1.5,0.9]"));
+  EXPECT_EQ(runSemslam("run --quiet --method known --in " + good + " --out " + scratch.path("ok")).exitCode, 0);
+  struct Case {
+    std::string increment, geometry, problem;
+  };
+  for (const Case& c : std::vector<Case>{{"[1e308,0,0.1]", "[1.5,0.9]", "odometry.increment[0]: number 1e+308 is too large"},
+                                         {"[1,0,-1e200]", "[1.5,0.9]", "odometry.increment[2]: number -1e+200 is too large"},
+                                         {"[1,0,0.1]", "[1e308,0.9]", "detections[0].geometry[0]: number 1e+308 is too large"},
+                                         {"[1,0,0.1]", "[1e-300,0.9]", "detections[0].geometry: the range must be at least 1e-6"}}) {
+    const std::string log = scratch.write("huge.jsonl", logWithSecondStep(c.increment, c.geometry));
+    for (const char* method : {"known", "mm-nh"}) {
+      const std::string out = scratch.path(std::string("r-") + method);
+      expectRefused(runSemslam("run --quiet --method " + std::string(method) + " --in " + log + " --out " + out),
+                    log + ":3: " + c.problem);
+      EXPECT_FALSE(fs::exists(out));
+    }
+  }
+}
+
+TEST(HostileCli, ConvertRefusesMoreClassesThanALogMayHoldBeforeReading) {
+  // --classes 100000 allocated a 10^5 x 10^5 confusion matrix before any data: std::bad_alloc, exit 1.
+  const semslam::test::TempDir scratch;
+  const std::string isam = scratch.write("g.isam", "EDGE2 0 1 1 0 0 1 0 0 1 0 1\n");
+  expectRefused(runSemslam("convert isam " + isam + " --classes 100000 --out " + scratch.path("x.jsonl")),
+                "--classes must be in [1, 2048], got 100000");
+  EXPECT_FALSE(fs::exists(scratch.path("x.jsonl")));
+}
+
+TEST(HostileCli, ConvertRefusesADatasetWhoseLogTheReaderWouldRefuse) {
+  // The writer refused the log with std::invalid_argument after the conversion: exit 1. Now an input error naming
+  // the dataset, the step and the field.
+  const semslam::test::TempDir scratch;
+  const std::string isam = scratch.write("g.isam", "EDGE2 0 1 1 0 0 1 0 0 1 0 1\nEDGE2 1 2 1e308 0 0 1 0 0 1 0 1\n");
+  expectRefused(runSemslam("convert isam " + isam + " --out " + scratch.path("x.jsonl")),
+                isam + ": the log made from it would be refused: step 2: odometry.increment[0]: number 1e+308 is too large");
+  const std::string fine = scratch.write("f.isam", "EDGE2 0 1 1 0 0 1 0 0 1 0 1\n");
+  expectRefused(runSemslam("convert isam " + fine + " --initial-pose-sigma 1e-12,1,1 --out " + scratch.path("x.jsonl")),
+                "--initial-pose-sigma values must be in [1e-9, 1e9], got 1e-12");
+  EXPECT_FALSE(fs::exists(scratch.path("x.jsonl")));
 }
 
 }  // namespace

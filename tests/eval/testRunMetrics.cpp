@@ -135,6 +135,9 @@ TEST(RunMetrics, ReaderIsLenientAboutMissingAndUnknownKeysButNotTypes) {
   EXPECT_FALSE(partial.daTotal);
 
   test::expectInputError([] { runMetricsFromJson(R"({"ate_rmse": 1})", "m.json"); }, "m.json", 0, "schema");
+  // A number beyond a double: nlohmann's out_of_range escaped as another exception (fuzz finding).
+  test::expectInputError([] { runMetricsFromJson(R"({"schema": "semslam.metrics/1", "ate_rmse": 2e308})", "m.json"); },
+                         "m.json", 0, "number overflow");
   test::expectInputError([] { runMetricsFromJson(R"({"schema": "semslam.metrics/2"})", "m.json"); }, "m.json", 0,
                          "schema");
   test::expectInputError([] { runMetricsFromJson(R"({"schema": "semslam.metrics/1", "ate_rmse": "x"})", "m.json"); },

@@ -277,6 +277,9 @@ TEST(KittiTrackingConverter, BadInputNamesFileAndLineAndExitsTwo) {
       {"unknown label type", "label_02/0000.txt",
        [](std::vector<std::string>& l) { l[4].replace(l[4].find("Pedestrian"), 10, "Bus"); },
        "label_02/0000.txt:5: unknown label type 'Bus'"},
+      // The matching allocates detections x labels per frame: rows of one frame are bounded (issue 16).
+      {"too many rows in one frame", "pointrcnn_detections/Car/0000.txt",
+       [](std::vector<std::string>& l) { l.insert(l.end(), 1001, l.back()); }, "rows for frame 119"},
   };
   for (const Case& c : cases) {
     TempDir dir;

@@ -83,7 +83,7 @@ MeasurementLog makeLog2(SemanticKind semantic, unsigned seed = 7) {
   h.landmarkPriors.push_back(LandmarkPrior{4, Point2(2.0, 1.0 / 7.0), spd(2, rng)});
   h.landmarkPriors.push_back(LandmarkPrior{9, Point2(-0.0, 1e-300), spd(2, rng, 1e6)});
   h.landmarkTruth.push_back(LandmarkTruth{4, 2, Point2(2.0, 0.1 + 0.2)});
-  h.landmarkTruth.push_back(LandmarkTruth{9, -1, Point2(6.02214076e23, -1.5)});
+  h.landmarkTruth.push_back(LandmarkTruth{9, -1, Point2(6.02214076e6, -1.5)});
   h.landmarkTruth.push_back(LandmarkTruth{0, 0, Point2(0.0, 0.0)});
   h.source = "unit test \"quoted\", ünïcödé and a tab\t";
   for (int k = 0; k < 6; ++k) {

@@ -134,7 +134,16 @@ TEST(ScenarioFile, FileErrorsNameTheFile) {
 
 TEST(ScenarioFile, SyntaxErrorsGiveTheLine) {
   expectError("{\n  \"format\": \"semslam-scenario\",\n  \"version\": 1,,\n}", {"not valid JSON"}, 3);
-  expectError(minimalScenario(", \"name\": \"a\", \"name\": \"b\""), {"duplicate key 'name'"});
+  expectError(minimalScenario(", \"name\": \"a\", \"name\": \"b\""), {"duplicate key 'name'"}, 4);
+}
+
+TEST(ScenarioFile, AKeyProblemInAMultiLineFileGivesTheLineOfTheKey) {
+  // Reported at line 0 (the file as a whole) before: the parser does not say where a key is.
+  expectError(minimalScenario(",\n  \"name\": \"a \\\"b\\\": {\\\"c\",\n  \"sensor\": {},\n  \"name\": \"b\""),
+              {"duplicate key 'name'"}, 7);
+  std::string many = "{\"format\": \"semslam-scenario\",\n\"objects\": [{";
+  for (int k = 0; k < 1001; ++k) many += (k == 0 ? "\n\"k" : ",\n\"k") + std::to_string(k) + "\": 0";
+  expectError(many + "}]}\n", {"more than 1000 keys"}, 1003);
 }
 
 TEST(ScenarioFile, StructuralErrorsNameTheField) {
@@ -143,7 +152,7 @@ TEST(ScenarioFile, StructuralErrorsNameTheField) {
                   "motion": {"arena": {"center": [0, 0], "radius": 5}}})",
               {"missing field 'objects'"});
   expectError(minimalScenario(", \"sensor\": {\"max_range\": \"far\"}"), {"sensor.max_range", "expected a number"});
-  expectError(minimalScenario(", \"start\": [0, 0]"), {"duplicate key 'start'"});
+  expectError(minimalScenario(", \"start\": [0, 0]"), {"duplicate key 'start'"}, 4);
   expectError(R"({"format": "semslam-scenario", "version": 2, "kind": "aliased2d",
                   "objects": [{"id": 0, "class": 0, "pose": [1, 2]}], "start": [0, 0, 0],
                   "motion": {"arena": {"center": [0, 0], "radius": 5}}})",

@@ -8,6 +8,7 @@
 
 #include "semslam/core/InputError.h"
 #include "semslam/core/InputExcerpt.h"
+#include "semslam/io/InputMagnitudes.h"
 
 namespace semslam::jsonio {
 
@@ -45,6 +46,19 @@ bool looksNonFinite(const std::string& text) {
 std::string shortened(std::string text, std::size_t limit = 40) {
   if (text.size() > limit) text = text.substr(0, limit) + "...";
   return text;
+}
+
+/// A bound as people write it: 1e7, 1e-18.
+std::string magnitudeText(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);  // "1e+07"
+  std::string written = text;
+  const auto e = written.find('e');
+  if (e == std::string::npos) return written;
+  std::string exponent = written.substr(e + 1);
+  const bool negative = exponent[0] == '-';
+  exponent.erase(0, exponent.find_first_not_of("+-0"));
+  return written.substr(0, e + 1) + (negative ? "-" : "") + exponent;
 }
 
 }  // namespace
@@ -167,6 +181,27 @@ Vector JsonField::vector(int length, std::string_view layout) const {
   return vector();
 }
 
+Vector JsonField::coordinates(int length, std::string_view layout) const {
+  const Vector v = vector(length, layout);
+  for (Eigen::Index i = 0; i < v.size(); ++i) {
+    if (std::abs(v(i)) > kMaxCoordinate) {
+      at(static_cast<std::size_t>(i)).fail(describeJson((*value_)[static_cast<std::size_t>(i)]) +
+                                            " is too large: coordinates, ranges and angles are at most " +
+                                            magnitudeText(kMaxCoordinate) + " in magnitude (docs/measurement-log.md)");
+    }
+  }
+  return v;
+}
+
+double JsonField::coordinate() const {
+  const double value = number();
+  if (std::abs(value) > kMaxCoordinate) {
+    fail(describeJson(*value_) + " is too large: coordinates, ranges and angles are at most " +
+         magnitudeText(kMaxCoordinate) + " in magnitude (docs/measurement-log.md)");
+  }
+  return value;
+}
+
 Matrix JsonField::covariance(int n, std::string_view what) const {
   const std::string shape = std::to_string(n) + "x" + std::to_string(n);
   const std::string expected = "a " + shape + " matrix (" + std::to_string(n) + " rows over " + std::string(what) + ")";
@@ -183,6 +218,15 @@ Matrix JsonField::covariance(int n, std::string_view what) const {
                std::to_string(row.value_->size()));
     }
     for (int j = 0; j < n; ++j) m(i, j) = row.at(static_cast<std::size_t>(j)).number();
+  }
+  for (int i = 0; i < n; ++i) {
+    // (A variance <= 0 is "not positive definite" below.)
+    if (m(i, i) > 0.0 && !(m(i, i) >= kMinVariance && m(i, i) <= kMaxVariance)) {
+      at(static_cast<std::size_t>(i)).at(static_cast<std::size_t>(i)).fail(
+          "variance " + describeJson((*value_)[static_cast<std::size_t>(i)][static_cast<std::size_t>(i)]) +
+          " is outside [" + magnitudeText(kMinVariance) + ", " + magnitudeText(kMaxVariance) +
+          "] (a standard deviation from 1e-9 to 1e9; docs/measurement-log.md)");
+    }
   }
   const double scale = m.diagonal().cwiseAbs().maxCoeff();
   for (int i = 0; i < n; ++i) {

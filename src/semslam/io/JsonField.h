@@ -74,8 +74,14 @@ class JsonField {
   Vector vector() const;
   /// An array of exactly `length` finite numbers; `layout` describes them in the message ("[x, y, theta]").
   Vector vector(int length, std::string_view layout) const;
+  /// vector(length, layout) whose every entry is at most kMaxCoordinate in magnitude (io/InputMagnitudes.h):
+  /// positions, translations, angles, ranges.
+  Vector coordinates(int length, std::string_view layout) const;
+  /// number(), at most kMaxCoordinate in magnitude.
+  double coordinate() const;
   /// An n×n covariance: an array of n arrays of n finite numbers, symmetric to
-  /// |Σij − Σji| ≤ 1e-9·max_k |Σkk|, positive definite (a Cholesky factorisation exists). Returned exactly
+  /// |Σij − Σji| ≤ 1e-9·max_k |Σkk|, every positive variance Σii in [kMinVariance, kMaxVariance] (io/InputMagnitudes.h),
+  /// positive definite (a Cholesky factorisation exists). Returned exactly
   /// symmetric ((Σ + Σᵀ)/2, which leaves an exactly symmetric input unchanged). `what` describes its rows in
   /// messages ("x, y, theta").
   Matrix covariance(int n, std::string_view what) const;

@@ -39,6 +39,9 @@ inline constexpr std::string_view kMeasurementLogFormat = "semslam-log";
 inline constexpr int kMeasurementLogVersion = 2;
 /// The first version whose detections may have "truth": "unknown".
 inline constexpr int kUnknownTruthVersion = 2;
+/// The most classes a log may declare: a categorical classifier allocates an M x M confusion matrix from the
+/// header alone, 32 MiB at 2048 (docs/measurement-log.md, "Limits"). Converters refuse a larger --classes first.
+inline constexpr int kMaxLogClasses = 2048;
 
 /// Reads and validates a whole log. Throws InputError(path, line, problem).
 MeasurementLog readMeasurementLog(const std::string& path);
@@ -47,6 +50,11 @@ MeasurementLog readMeasurementLog(const std::string& path);
 /// Throws std::invalid_argument for a log the reader would reject ("step 12: detections[0].covariance: not
 /// positive definite"), std::runtime_error when the file cannot be written.
 void writeMeasurementLog(const std::string& path, const MeasurementLog& log);
+
+/// Validates `log` record by record with the reader's own parsers, as writeMeasurementLog does before it writes.
+/// Throws InputError(source, 0, "the log made from it would be refused: step 12: <problem>") (or "header: ..."):
+/// for a log made from `source` (a dataset a converter read), whose input caused the problem.
+void checkMeasurementLog(const MeasurementLog& log, const std::string& source);
 
 /// Reads a log one time step at a time, validating as readMeasurementLog does, for logs too long to hold.
 class MeasurementLogReader {

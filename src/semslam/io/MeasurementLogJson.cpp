@@ -11,6 +11,7 @@
 
 #include "semslam/core/ExactNumber.h"
 #include "semslam/core/InputExcerpt.h"
+#include "semslam/io/InputMagnitudes.h"
 #include "semslam/io/MeasurementLogFile.h"
 
 namespace semslam {
@@ -55,9 +56,8 @@ namespace {
 
 constexpr double kProbabilitySumTolerance = 1e-6;
 constexpr double kQuaternionNormTolerance = 1e-6;
-/// M x M confusion matrices are allocated from the declared class count before any detection is read: 2048
-/// classes are 32 MiB (docs/measurement-log.md, "Limits").
-constexpr long long kMaxClasses = 2048;
+/// M x M confusion matrices are allocated from the declared class count before any detection is read.
+constexpr long long kMaxClasses = kMaxLogClasses;
 /// A step holds at most this many detections (docs/measurement-log.md, "Limits").
 constexpr std::size_t kMaxDetectionsPerStep = 10000;
 
@@ -90,7 +90,7 @@ void checkQuaternion(const JsonField& field, const Vector& v) {
 }
 
 Pose poseFromJson(const JsonField& field, int dimension) {
-  const Vector v = field.vector(dimension == 2 ? 3 : 7, poseLayout(dimension));
+  const Vector v = field.coordinates(dimension == 2 ? 3 : 7, poseLayout(dimension));
   if (dimension == 2) return SE2(v(0), v(1), v(2));
   checkQuaternion(field, v);
   return SE3(SO3::fromQuaternion(Eigen::Quaterniond(v(6), v(3), v(4), v(5))), Point3(v(0), v(1), v(2)));
@@ -102,7 +102,7 @@ LandmarkState landmarkFromJson(const JsonField& field, int dimension, bool hasPo
     if (dimension == 2) return std::get<SE2>(pose);
     return std::get<SE3>(pose);
   }
-  const Vector v = field.vector(dimension, pointLayout(dimension));
+  const Vector v = field.coordinates(dimension, pointLayout(dimension));
   if (dimension == 2) return Point2(v(0), v(1));
   return Point3(v(0), v(1), v(2));
 }
@@ -282,7 +282,7 @@ SensorSpec sensorFromJson(const JsonField& field, int dimension) {
   }
   if (field.has("body_to_sensor")) sensor.bodyToSensor = poseFromJson(field["body_to_sensor"], dimension);
   if (field.has("max_range")) {
-    sensor.maxRange = field["max_range"].number();
+    sensor.maxRange = field["max_range"].coordinate();
     if (sensor.maxRange < 0.0)
       field["max_range"].fail("must be >= 0 (0: unlimited), found " + seventeenDigitNumber(sensor.maxRange));
   }
@@ -483,12 +483,12 @@ Detection StepParser::parseDetection(const JsonField& field) const {
   const char* covarianceLayout = "";
   switch (header_.sensor.kind) {
     case SensorKind::RangeBearing:
-      detection.geometry = geometry.vector(2, "[range, bearing]");
+      detection.geometry = geometry.coordinates(2, "[range, bearing]");
       covarianceSize = 2;
       covarianceLayout = "range, bearing";
       break;
     case SensorKind::RangeBearingElevation:
-      detection.geometry = geometry.vector(3, "[range, bearing, elevation]");
+      detection.geometry = geometry.coordinates(3, "[range, bearing, elevation]");
       covarianceSize = 3;
       covarianceLayout = "range, bearing, elevation";
       if (std::abs(detection.geometry(2)) > 0.5 * std::numbers::pi) {
@@ -496,20 +496,21 @@ Detection StepParser::parseDetection(const JsonField& field) const {
       }
       break;
     case SensorKind::RelativePosition:
-      detection.geometry = geometry.vector(dimension, pointLayout(dimension));
+      detection.geometry = geometry.coordinates(dimension, pointLayout(dimension));
       covarianceSize = dimension;
       covarianceLayout = dimension == 2 ? "x, y" : "x, y, z";
       break;
     case SensorKind::RelativePose:
-      detection.geometry = geometry.vector(dimension == 2 ? 3 : 7, poseLayout(dimension));
+      detection.geometry = geometry.coordinates(dimension == 2 ? 3 : 7, poseLayout(dimension));
       if (dimension == 3) checkQuaternion(geometry, detection.geometry);
       covarianceSize = tangentDimension(dimension);
       covarianceLayout = tangentLayout(dimension);
       break;
   }
   if ((header_.sensor.kind == SensorKind::RangeBearing || header_.sensor.kind == SensorKind::RangeBearingElevation) &&
-      !(detection.geometry(0) > 0.0)) {
-    geometry.fail("the range must be positive, found " + seventeenDigitNumber(detection.geometry(0)));
+      !(detection.geometry(0) >= kMinRange)) {
+    geometry.fail("the range must be at least 1e-6 (docs/measurement-log.md), found " +
+                  seventeenDigitNumber(detection.geometry(0)));
   }
   detection.covariance = field["covariance"].covariance(covarianceSize, covarianceLayout);
 

@@ -152,7 +152,8 @@ RunMetrics runMetricsFromJson(const std::string& text, const std::string& source
   try {
     requireJsonNestingAtMost(text, source, 1);
     json = Json::parse(text);
-  } catch (const Json::parse_error& error) {
+  } catch (const Json::exception& error) {
+    // parse_error, and out_of_range for a number beyond a double (2e308): the fuzzer found the latter uncaught.
     throw InputError(source, 0, "not valid JSON: " + boundedMessage(error.what(), 200));
   }
   if (!json.is_object()) throw InputError(source, 0, "metrics.json must hold one JSON object");

@@ -22,7 +22,7 @@ namespace {
 // ---- reading ----
 
 SE2 poseFrom(const JsonField& field) {
-  const Vector v = field.vector(3, "[x, y, theta]");
+  const Vector v = field.coordinates(3, "[x, y, theta]");
   return SE2(v(0), v(1), v(2));
 }
 
@@ -76,7 +76,7 @@ void readMotion(const JsonField& field, Aliased2dMotion& motion) {
   if (field.has("time_step")) motion.timeStep = field["time_step"].number();
   const JsonField arena = field["arena"];
   arena.requireObject({"center", "radius"});
-  motion.arenaCenter = arena["center"].vector(2, "[x, y]");
+  motion.arenaCenter = arena["center"].coordinates(2, "[x, y]");
   motion.arenaRadius = arena["radius"].number();
 }
 

@@ -27,6 +27,7 @@ std::size_t lineOfByte(const std::string& text, std::size_t byte, std::size_t fi
 class KeyChecker {
  public:
   std::string keyProblem;
+  std::size_t keysSeen = 0;  // keys read so far, the refused one included
   std::size_t errorByte = 0;  // 1-based, as nlohmann counts; 0: none
   std::string errorWhat;
 
@@ -48,6 +49,7 @@ class KeyChecker {
   bool start_array(std::size_t) { return true; }
   bool end_array() { return true; }
   bool key(std::string& key) {
+    ++keysSeen;
     if (keys_.back().size() == kMaxJsonObjectKeys) {
       keyProblem = "an object with more than " + std::to_string(kMaxJsonObjectKeys) + " keys (the most accepted)";
       return false;
@@ -67,6 +69,25 @@ class KeyChecker {
  private:
   std::vector<std::unordered_set<std::string>> keys_;  // the keys seen so far in each open object
 };
+
+/// The byte where the n-th key (1-based, in document order) of valid JSON text starts: a key is a string followed,
+/// after white space, by ':'. A linear scan (the SAX parser does not say where a key is).
+std::size_t byteOfKey(const std::string& text, std::size_t n) {
+  std::size_t keys = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '"') continue;
+    const std::size_t start = i;
+    for (++i; i < text.size() && text[i] != '"'; ++i) {
+      if (text[i] == '\\') ++i;  // an escaped character, '"' included
+    }
+    std::size_t next = i + 1;
+    while (next < text.size() && (text[next] == ' ' || text[next] == '\t' || text[next] == '\n' || text[next] == '\r')) {
+      ++next;
+    }
+    if (next < text.size() && text[next] == ':' && ++keys == n) return start;
+  }
+  return text.size();
+}
 
 }  // namespace
 
@@ -89,9 +110,10 @@ std::string jsonProblem(const std::string& what) {
 Json parseStrictJson(const std::string& text, const std::string& file, std::size_t firstLine) {
   requireJsonNestingAtMost(text, file, firstLine);
   KeyChecker checker;
-  const bool oneLine = text.find('\n') == std::string::npos;
   if (!Json::sax_parse(text, &checker)) {
-    if (!checker.keyProblem.empty()) throw InputError(file, oneLine ? firstLine : 0, checker.keyProblem);
+    if (!checker.keyProblem.empty()) {
+      throw InputError(file, lineOfByte(text, byteOfKey(text, checker.keysSeen), firstLine), checker.keyProblem);
+    }
     throw InputError(file, lineOfByte(text, checker.errorByte == 0 ? 0 : checker.errorByte - 1, firstLine),
                      "not valid JSON: " + jsonProblem(checker.errorWhat));
   }

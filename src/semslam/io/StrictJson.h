@@ -8,8 +8,8 @@
 //   (the last two by a SAX pass that builds nothing, before the plain parser builds the value: nlohmann's callback
 //   parser is quadratic in the length of an array of objects);
 //   - invalid JSON, with nlohmann's message shortened and escaped (it quotes the last token read, unbounded).
-// The line of a problem is `firstLine` plus the newlines before it; a key problem (the parser does not say where
-// it is) is reported at `firstLine` for one-line text and at line 0 (the file as a whole) for longer text.
+// The line of a problem is `firstLine` plus the newlines before it; for a key problem (the parser does not say
+// where a key is) the line of the refused key, found by counting keys in a linear scan of the text.
 //
 // Internal to the io layer, like JsonField.h.
 

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "semslam/core/InputError.h"
+#include "semslam/io/MeasurementLogFile.h"
 
 namespace semslam {
 
@@ -20,7 +21,12 @@ std::size_t sigmaCount(int dimension) { return dimension == 3 ? 6u : 3u; }
 }  // namespace
 
 void validateConvertOptions(const ConvertOptions& options, int dimension) {
-  if (options.classes < 1) throw InputError("--classes must be at least 1, got " + std::to_string(options.classes));
+  if (options.classes < 1 || options.classes > kMaxLogClasses) {
+    // Before any data is read: the labels' M x M confusion matrix is allocated from this count (10^5 classes died
+    // with std::bad_alloc), and a log declares at most kMaxLogClasses.
+    throw InputError("--classes must be in [1, " + std::to_string(kMaxLogClasses) + "], got " +
+                     std::to_string(options.classes));
+  }
   if (!std::isfinite(options.misclassification) || options.misclassification < 0.0 ||
       options.misclassification >= 1.0) {
     throw InputError("--misclassification must be in [0, 1), got " + number(options.misclassification));
@@ -36,6 +42,10 @@ void validateConvertOptions(const ConvertOptions& options, int dimension) {
   if (!std::isfinite(options.mapPriorSigma) || options.mapPriorSigma < 0.0) {
     throw InputError("--map-prior must be a finite standard deviation >= 0, got " + number(options.mapPriorSigma));
   }
+  // A log's variances are in [1e-18, 1e18] (docs/measurement-log.md, "Limits").
+  if (options.mapPriorSigma > 0.0 && (options.mapPriorSigma < 1e-9 || options.mapPriorSigma > 1e9)) {
+    throw InputError("--map-prior must be 0 or in [1e-9, 1e9], got " + number(options.mapPriorSigma));
+  }
   if (!options.initialPoseSigmas.empty()) {
     const std::size_t expected = sigmaCount(dimension);
     if (options.initialPoseSigmas.size() != expected) {
@@ -44,8 +54,8 @@ void validateConvertOptions(const ConvertOptions& options, int dimension) {
                        "), got " + std::to_string(options.initialPoseSigmas.size()));
     }
     for (double sigma : options.initialPoseSigmas) {
-      if (!std::isfinite(sigma) || sigma <= 0.0) {
-        throw InputError("--initial-pose-sigma values must be finite and > 0, got " + number(sigma));
+      if (!std::isfinite(sigma) || sigma < 1e-9 || sigma > 1e9) {
+        throw InputError("--initial-pose-sigma values must be in [1e-9, 1e9], got " + number(sigma));
       }
     }
   }

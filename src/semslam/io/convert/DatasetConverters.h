@@ -23,7 +23,8 @@ namespace semslam {
 /// The kinds above, in that order.
 const std::vector<std::string>& datasetKinds();
 
-/// Converts the dataset at `path` with the converter `kind`; throws InputError for an unknown kind.
+/// Converts the dataset at `path` with the converter `kind`; throws InputError for an unknown kind, and for a log
+/// the measurement-log reader would refuse (checkMeasurementLog: numbers beyond its limits).
 MeasurementLog convertDataset(const std::string& kind, const std::string& path, const ConvertOptions& options,
                               ConversionStats* stats = nullptr);
 

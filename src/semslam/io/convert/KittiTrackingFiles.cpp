@@ -72,12 +72,31 @@ int frameField(const std::string& path, std::size_t line, double value, int prev
   return frame;
 }
 
+/// Counts the rows of one file per frame (rows come in frame order) and refuses the row past kMaxKittiRowsPerFrame.
+class RowsPerFrame {
+ public:
+  void count(const std::string& path, std::size_t line, int frame) {
+    rows_ = frame == frame_ ? rows_ + 1 : 1;
+    frame_ = frame;
+    if (rows_ > kMaxKittiRowsPerFrame) {
+      throw InputError(path, line,
+                       "more than " + std::to_string(kMaxKittiRowsPerFrame) + " rows for frame " +
+                           std::to_string(frame) + " (the most accepted in one frame)");
+    }
+  }
+
+ private:
+  int frame_ = -1;
+  std::size_t rows_ = 0;
+};
+
 std::vector<KittiLabel> readLabels(const std::string& path, std::size_t poses, const std::string& posePath) {
   std::ifstream in = openInputFile(path);
   std::vector<KittiLabel> labels;
   std::string text;
   std::size_t line = 0;
   int previous = 0;
+  RowsPerFrame rowsPerFrame;
   static const char* const kNames[kLabelFields] = {"frame", "track_id", "type",  "truncated", "occluded", "alpha",
                                                    "x1",    "y1",       "x2",    "y2",        "h",        "w",
                                                    "l",     "X",        "Y",     "Z",         "rotation_y"};
@@ -101,6 +120,7 @@ std::vector<KittiLabel> readLabels(const std::string& path, std::size_t poses, c
     KittiLabel label;
     label.line = line;
     label.frame = frameField(path, line, value[0], previous, poses, posePath);
+    rowsPerFrame.count(path, line, label.frame);
     previous = label.frame;
     label.type = parseLabelType(path, line, field[2]);
     if (value[1] != std::floor(value[1]) || value[1] < -1.0 || value[1] > 1e9) {
@@ -124,6 +144,7 @@ void readDetections(const std::string& path, KittiClass detectedClass, std::size
   // Detection type codes of the files: 1 Pedestrian, 2 Car, 3 Cyclist.
   const int expectedType = detectedClass == KittiClass::Car ? 2 : detectedClass == KittiClass::Pedestrian ? 1 : 3;
   int previous = 0;
+  RowsPerFrame rowsPerFrame;
   for (const NumericRow& row : readNumericTable(path, Separator::Comma)) {
     if (row.values.size() != kDetectionFields) {
       throw InputError(path, row.line,
@@ -134,6 +155,7 @@ void readDetections(const std::string& path, KittiClass detectedClass, std::size
     KittiDetection detection;
     detection.line = row.line;
     detection.frame = frameField(path, row.line, row.values[0], previous, poses, posePath);
+    rowsPerFrame.count(path, row.line, detection.frame);
     previous = detection.frame;
     const int type = integerField(path, row, 1, "type", 1, 3);
     if (type != expectedType) {
@@ -146,6 +168,14 @@ void readDetections(const std::string& path, KittiClass detectedClass, std::size
     detection.box = {row.values[2], row.values[3], row.values[4], row.values[5]};
     detection.score = row.values[6];
     detection.bottomCentre = Point3(row.values[10], row.values[11], row.values[12]);
+    // Its covariance grows with its direction and range from the camera (KittiDetectionNoise.h): none at the
+    // camera, and a log's coordinates are at most 1e7 (docs/measurement-log.md, "Limits").
+    if (detection.bottomCentre.cwiseAbs().maxCoeff() > kMaxKittiCoordinate) {
+      throw InputError(path, row.line, "the position (x, y, z) is too large: at most 1e7 m in magnitude");
+    }
+    if (detection.bottomCentre.norm() == 0.0) {
+      throw InputError(path, row.line, "the position (x, y, z) is at the camera (0, 0, 0): a detection has a direction");
+    }
     detections.push_back(detection);
   }
 }

@@ -17,7 +17,10 @@
 // number of fields (a truncated line), a field that is not a number, a frame that is not an integer ≥ 0, a frame
 // smaller than the previous row's (rows are in frame order), an unknown label type, a detection whose type column
 // differs from its folder's class, a score or position that is not finite, and a frame (of a label or a detection)
-// for which the pose file has no line ("frame 153 has no pose: orbslam3_stereo_poses/0000.txt has 150 lines").
+// for which the pose file has no line ("frame 153 has no pose: orbslam3_stereo_poses/0000.txt has 150 lines"),
+// a detection at the camera or farther than kMaxKittiCoordinate, and more than kMaxKittiRowsPerFrame rows of one
+// file in one frame (the ground-truth matching allocates a
+// detections × labels matrix per frame: 10^5 rows of one frame would have asked for 80 GB).
 
 #include <array>
 #include <cstddef>
@@ -37,6 +40,10 @@ const std::array<std::string, kKittiClasses>& kittiClassNames();
 /// A label's type as KITTI writes it.
 enum class KittiLabelType { Car, Van, Truck, Pedestrian, PersonSitting, Cyclist, Tram, Misc, DontCare };
 inline constexpr int kKittiLabelTypes = 9;
+/// The largest coordinate of a detection's position (a log's limit, docs/measurement-log.md).
+inline constexpr double kMaxKittiCoordinate = 1e7;
+/// The most rows one file may hold for one frame (KITTI's frames have fewer than 100 objects).
+inline constexpr std::size_t kMaxKittiRowsPerFrame = 1000;
 
 struct KittiLabel {
   std::size_t line = 0;  ///< in the label file, for messages
