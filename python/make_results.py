@@ -15,6 +15,7 @@ import subprocess
 import sys
 import tempfile
 
+import plot_hybrid
 import results_association
 import results_association_defaults
 import results_hybrid_mrclam
@@ -154,7 +155,7 @@ def hybrid_study_lines(title, command, output, analysis, data, out):
              "| metric | classifier | geometric | paired difference (pooled) | 95 % bootstrap CI | excludes 0 | "
              "Wilcoxon p (classifier lower) | pairs that differ | layouts separating |",
              "|---|---|---|---|---|---|---|---|---|"]
-    for metric, _ in plot_hybrid_module().METRICS:
+    for metric, _ in plot_hybrid.METRICS:
         p = a["paired"][metric]
         lines.append(f"| {metric} | {p['classifier_mean']:.4g} | {p['geometric_mean']:.4g} | "
                      f"{p['mean_difference']:.4g} | [{p['ci_low']:.4g}, {p['ci_high']:.4g}] | "
@@ -187,15 +188,8 @@ def hybrid_study_lines(title, command, output, analysis, data, out):
     return lines + [""]
 
 
-def plot_hybrid_module():
-    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-    import plot_hybrid
-    return plot_hybrid
-
-
 def hybrid_section(semslam, data, scratch, python):
     """Paper A's study on generated aliased2d layouts (issues 4 and 12) and the hybrid belief on Lost in the Woods."""
-    plot_hybrid = plot_hybrid_module()
     lines = ["## Hybrid belief, paper A (issues 4 and 12)", "",
              "docs/hybrid-belief.md explains the method and every decision. Study (`semslam study hybrid`): 10 "
              "generated layouts (sim/Aliased2dLayout.h, layout seeds 1-10; docs/simulators.md) × 50 tracks of 10 "

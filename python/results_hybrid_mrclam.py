@@ -32,11 +32,10 @@ def _components(folder):
     return max(counts), sum(counts) / len(counts)
 
 
-def _run(semslam, log, method, flags, out):
+def _run(semslam, log, steps, method, flags, out):
     run_checked([semslam, "run", "--method", method, "--in", log, "--out", out, "--no-covariances", "--quiet",
                  "--overwrite"] + flags)
     m = read_metrics(out)
-    steps = sum(1 for line in open(log)) - 1
     most, mean = _components(out)
     return {"ate": m["ate_rmse"], "da_real": m.get("da_accuracy_real", float("nan")),
             "precision": m.get("pairwise_precision", float("nan")), "recall": m.get("pairwise_recall", float("nan")),
@@ -54,6 +53,8 @@ def hybrid_mrclam_section(semslam, data, scratch, shown):
         log = os.path.join(scratch, f"mrclam-map-{robot}.jsonl")
         convert = [semslam, "convert", "mrclam", dataset, "--robot", str(robot), "--out", log] + CONVERT
         run_checked(convert)
+        with open(log) as f:
+            steps = sum(1 for _ in f) - 1  # the header, then a line per step
         if robot == 1:
             lines += ["```sh", shown(convert).replace(log, "mrclam-map-R.jsonl").replace("--robot 1", "--robot R")]
             for method, flags in METHODS:
@@ -62,17 +63,17 @@ def hybrid_mrclam_section(semslam, data, scratch, shown):
                                         log, "mrclam-map-R.jsonl"))
             lines += ["```", ""]
         for method, flags in METHODS:
-            jobs.append((robot, method, log, flags, os.path.join(scratch, f"mrclam-map-{robot}-{method}")))
+            jobs.append((robot, method, log, steps, flags, os.path.join(scratch, f"mrclam-map-{robot}-{method}")))
     with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
-        results = list(pool.map(lambda job: _run(semslam, job[2], job[1], job[3], job[4]), jobs))
+        results = list(pool.map(lambda job: _run(semslam, job[2], job[3], job[1], job[4], job[5]), jobs))
     lines += ["| robot | method | ATE rmse [m] | da_accuracy_real | pairwise precision | pairwise recall | "
               "components max/mean | time per step [ms] |", "|---|---|---|---|---|---|---|---|"]
-    for (robot, method, _, _, _), r in zip(jobs, results):
+    for (robot, method, *_), r in zip(jobs, results):
         lines.append(f"| {robot} | {method} | {r['ate']:.3f} | {r['da_real']:.3f} | {r['precision']:.3f} | "
                      f"{r['recall']:.3f} | {r['components']} | {r['time_per_step_ms']:.1f} |")
     lines.append("")
     for method, _ in METHODS:
-        chosen = [r for (robot, m, _, _, _), r in zip(jobs, results) if m == method]
+        chosen = [r for (robot, m, *_), r in zip(jobs, results) if m == method]
         lines.append(f"- {method}: mean over robots ATE {sum(r['ate'] for r in chosen) / len(chosen):.3f} m, "
                      f"da_accuracy_real {sum(r['da_real'] for r in chosen) / len(chosen):.3f}.")
     return lines + [""]

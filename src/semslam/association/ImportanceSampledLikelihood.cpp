@@ -68,8 +68,7 @@ SampledLikelihood importanceSampledLikelihood(std::span<const FactorPtr> factors
     proposal = std::move(next);
   }
 
-  std::vector<double> logTerms;
-  logTerms.reserve(samples);
+  Vector logTerms(samples);
   const Matrix normals = standardNormalMatrix(layout.total, samples, rng);
   for (int s = 0; s < samples; ++s) {
     const auto n = normals.col(s);
@@ -79,7 +78,7 @@ SampledLikelihood importanceSampledLikelihood(std::span<const FactorPtr> factors
     double logTerm = -normalizers - proposal.halfLogDetS + 0.5 * n.squaredNorm() -
                      0.5 * prior.matrixL().solve(delta).squaredNorm();
     for (const FactorPtr& factor : factors) logTerm -= 0.5 * factor->chi2(sample);
-    logTerms.push_back(logTerm + logSampleWeight(weight, sample));
+    logTerms(s) = logTerm + logSampleWeight(weight, sample);
   }
   return meanOfExponentials(logTerms);
 }

@@ -74,7 +74,7 @@ double logSampleWeight(const SampleWeight& weight, const Values& sample) {
   return w > 0.0 ? std::log(w) : -std::numeric_limits<double>::infinity();
 }
 
-SampledLikelihood meanOfExponentials(std::span<const double> logTerms) {
+SampledLikelihood meanOfExponentials(const Vector& logTerms) {
   const int n = static_cast<int>(logTerms.size());
   double maximum = -std::numeric_limits<double>::infinity();
   for (double t : logTerms) maximum = std::max(maximum, t);

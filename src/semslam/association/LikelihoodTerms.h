@@ -41,6 +41,6 @@ double sumOfLogNormalizers(std::span<const FactorPtr> factors);
 double logSampleWeight(const SampleWeight& weight, const Values& sample);
 
 /// log of the mean of exp(terms) (log-sum-exp) and the mean's relative standard error; at least 2 terms.
-SampledLikelihood meanOfExponentials(std::span<const double> logTerms);
+SampledLikelihood meanOfExponentials(const Vector& logTerms);
 
 }  // namespace semslam

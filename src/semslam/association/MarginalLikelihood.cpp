@@ -87,8 +87,7 @@ Vector sampledLogTerms(std::span<const FactorPtr> factors, const MarginalSamples
 SampledLikelihood sampledLikelihood(std::span<const FactorPtr> factors, const MarginalSamples& samples,
                                     const SampleWeight& weight) {
   // p(z | H) ≈ (1/n) Σ_s P(Z | X_s) P(β | X_s) (A, eq. 16-17).
-  const Vector logTerms = sampledLogTerms(factors, samples, weight);
-  return meanOfExponentials(std::span<const double>(logTerms.data(), static_cast<std::size_t>(logTerms.size())));
+  return meanOfExponentials(sampledLogTerms(factors, samples, weight));
 }
 
 SampledLikelihood sampledLikelihood(std::span<const FactorPtr> factors, const Values& values,

@@ -26,7 +26,6 @@
 // factor must be in `marginal` and in `values`; otherwise std::invalid_argument.
 
 #include <functional>
-#include <map>
 #include <random>
 #include <span>
 #include <vector>

@@ -392,8 +392,7 @@ std::vector<AssociationCandidate> propagateWeights(const HybridProblem& problem,
         draws.emplace(problem, parent, keys, options.samples, options.visibility, rng);
         drawsParent = c.parent;
       }
-      const Vector terms = draws->logTerms(c, caches[c.parent]);
-      likelihood = meanOfExponentials(std::span<const double>(terms.data(), static_cast<std::size_t>(terms.size())));
+      likelihood = meanOfExponentials(draws->logTerms(c, caches[c.parent]));
     }
     // w_β1:k ∝ w_β1:k−1 · (1/n_s) Σ_s P(Z_k | X_s) P(β_k | X_s) (A, eq. 16-17)
     c.logWeight = std::log(parent.component->weight) + likelihood.logLikelihood + c.logConstant;

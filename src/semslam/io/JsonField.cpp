@@ -183,13 +183,7 @@ Vector JsonField::vector(int length, std::string_view layout) const {
 
 Vector JsonField::coordinates(int length, std::string_view layout) const {
   const Vector v = vector(length, layout);
-  for (Eigen::Index i = 0; i < v.size(); ++i) {
-    if (std::abs(v(i)) > kMaxCoordinate) {
-      at(static_cast<std::size_t>(i)).fail(describeJson((*value_)[static_cast<std::size_t>(i)]) +
-                                            " is too large: coordinates, ranges and angles are at most " +
-                                            magnitudeText(kMaxCoordinate) + " in magnitude (docs/measurement-log.md)");
-    }
-  }
+  for (Eigen::Index i = 0; i < v.size(); ++i) at(static_cast<std::size_t>(i)).coordinate();  // refuses, naming it
   return v;
 }
 

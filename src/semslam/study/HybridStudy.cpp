@@ -81,11 +81,12 @@ HybridStudyRow runOne(const HybridStudyOptions& options, const HybridStudyRun& j
   row.errWavg = metrics.errorWeightedAverage;
   row.ess = metrics.ess;
   row.components = static_cast<int>(last.components.size());
-  // The run's trajectory is the heaviest component's (hybrid/HybridRun.h); the first of equal weights, as there.
-  row.finalNees = poseNees(std::get<SE2>(out.result.poses.back()), truth, out.result.poseCovariances.back());
+  // The heaviest component (the first of equal weights, as the run's trajectory, hybrid/HybridRun.h): its final
+  // pose's NEES and whether its history is the true one come from the same component.
   const auto heaviest = std::max_element(
       last.components.begin(), last.components.end(),
       [](const HypothesisComponent& a, const HypothesisComponent& b) { return a.weight < b.weight; });
+  row.finalNees = poseNees(std::get<SE2>(heaviest->pose), truth, heaviest->covariance);
   row.heaviestComponentCorrect = historyIsTrue(heaviest->associations, log);
   row.mixtureNees = mixtureNees(last.components, truth);
   const int step = std::min<int>(options.disambiguationStep, static_cast<int>(out.hybridSteps.size()) - 1);
