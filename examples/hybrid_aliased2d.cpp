@@ -54,8 +54,9 @@ std::string joined(const std::vector<int>& numbers) {
 AssociationHistory trueHistory(const MeasurementLog& log) {
   AssociationHistory history;
   for (const TimeStep& step : log.steps) {
-    history.emplace_back();
-    for (const Detection& detection : step.detections) history.back().push_back(detection.truthId.value_or(-1));
+    std::vector<int> beta;
+    for (const Detection& detection : step.detections) beta.push_back(detection.truthId.value_or(-1));
+    history = history.extended(beta);
   }
   return history;
 }
@@ -74,11 +75,12 @@ bool printFinalBelief(const MethodRun& run, const MeasurementLog& log, const Ass
   bool valid = !weights.empty();
   for (std::size_t i : order) {
     // β at the latest step that had detections: which car each of that step's detections is associated with.
-    const AssociationHistory& history = components[i].associations;
+    const std::vector<std::vector<int>> history = components[i].associations.steps();
     std::size_t k = history.size();
     while (k > 0 && history[k - 1].empty()) --k;
     std::printf("  w = %.4f   step %zu's detections from cars [%s]%s", weights[i], k == 0 ? 0 : k - 1,
-                k == 0 ? "" : joined(history[k - 1]).c_str(), history == truth ? " (the true history)" : "");
+                k == 0 ? "" : joined(history[k - 1]).c_str(),
+                components[i].associations == truth ? " (the true history)" : "");
     if (!components[i].classes.empty()) std::printf("   classes C = [%s]", joined(components[i].classes).c_str());
     std::printf("\n");
     sum += weights[i];
@@ -116,20 +118,21 @@ int main() {
   // 3. How the beliefs evolve: at every step, the number of hypotheses and the weight of the heaviest
   //    association history, P(β_1:k | H_k) (A, eq. 8). Aliasing shows as several histories sharing the weight.
   std::printf("step   hybrid: hypotheses, max P(beta | H)   hybrid-geometric: hypotheses, max P(beta | H)\n");
-  for (std::size_t k = 0; k < withClasses.hybridSteps.size() && k < geometric.hybridSteps.size(); ++k) {
-    const HybridMarginals& a = withClasses.hybridSteps[k].marginals;
-    const HybridMarginals& b = geometric.hybridSteps[k].marginals;
-    std::printf("%4d   %18zu  %16.3f   %28zu  %16.3f\n", a.step, a.components.size(), a.association.front().weight,
-                b.components.size(), b.association.front().weight);
+  for (std::size_t k = 0; k < withClasses.hybridStepMetrics.size() && k < geometric.hybridStepMetrics.size(); ++k) {
+    const HypothesisMetrics& a = withClasses.hybridStepMetrics[k];
+    const HypothesisMetrics& b = geometric.hybridStepMetrics[k];
+    std::printf("%4zu   %18zu  %16.3f   %28zu  %16.3f\n", k, a.components, a.heaviestAssociationWeight, b.components,
+                b.heaviestAssociationWeight);
   }
 
   // 4. The final beliefs: every hypothesis with its weight, its latest associations (marked when the whole
   //    history is the true one) and, with the classifier model, its class realization C.
   const AssociationHistory truth = trueHistory(log);
-  std::size_t lastSeen = truth.size();
-  while (lastSeen > 0 && truth[lastSeen - 1].empty()) --lastSeen;
+  const std::vector<std::vector<int>> trueSteps = truth.steps();
+  std::size_t lastSeen = trueSteps.size();
+  while (lastSeen > 0 && trueSteps[lastSeen - 1].empty()) --lastSeen;
   std::printf("truth: step %zu's detections from cars [%s]\n", lastSeen == 0 ? 0 : lastSeen - 1,
-              lastSeen == 0 ? "" : joined(truth[lastSeen - 1]).c_str());
+              lastSeen == 0 ? "" : joined(trueSteps[lastSeen - 1]).c_str());
   const bool hybridValid = printFinalBelief(withClasses, log, truth);
   const bool geometricValid = printFinalBelief(geometric, log, truth);
 

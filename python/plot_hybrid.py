@@ -23,6 +23,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import hypotheses  # noqa: E402  (python/hypotheses.py, beside this file)
 import paired_statistics  # noqa: E402  (python/paired_statistics.py, beside this file)
 
 
@@ -173,11 +174,6 @@ def fig5(study, out):
     print(f"wrote {out}")
 
 
-def read_jsonl(path):
-    with open(path) as f:
-        return [json.loads(line) for line in f if line.strip()]
-
-
 def read_tum(path):
     poses = []
     if not os.path.exists(path):
@@ -218,8 +214,8 @@ def fig4(classifier, geometric, steps, out):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    runs = {"geometric": read_jsonl(os.path.join(geometric, "hypotheses.jsonl")),
-            "classifier": read_jsonl(os.path.join(classifier, "hypotheses.jsonl"))}
+    runs = {"geometric": hypotheses.read(os.path.join(geometric, "hypotheses.jsonl")),
+            "classifier": hypotheses.read(os.path.join(classifier, "hypotheses.jsonl"))}
     truth = read_tum(os.path.join(classifier, "truth.tum"))
     truth_hist = true_history(classifier)
     steps = [s for s in steps if s < len(runs["classifier"])]
@@ -251,8 +247,8 @@ def fig4(classifier, geometric, steps, out):
         ax = axes[2][col]
         histories = {}
         for model in ("geometric", "classifier"):
-            for a in runs[model][k]["association_marginal"]:
-                histories.setdefault(json.dumps(a["associations"]), {})[model] = a["weight"]
+            for history, weight in hypotheses.association_marginal(runs[model], k):
+                histories.setdefault(json.dumps(history), {})[model] = weight
         keys = sorted(histories, key=lambda h: -max(histories[h].values()))[:20]
         xs = range(len(keys))
         ax.bar([x - 0.2 for x in xs], [histories[h].get("geometric", 0) for h in keys], width=0.4, color="tab:blue",

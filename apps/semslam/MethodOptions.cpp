@@ -96,6 +96,10 @@ void addHybridOptions(CLI::App* command, HybridOptions& options) {
                       "at a time")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  command->add_option("--max-memory", options.maxMemoryMiB,
+                      "hybrid: MiB the components' smoothers may hold; past it a step keeps fewer components")
+      ->check(CLI::Range(1e-3, 1e9))
+      ->capture_default_str();
   command->add_flag("--no-visibility{false}", options.visibility,
                     "hybrid: sampled weights without the visibility model");
 }

@@ -45,7 +45,7 @@ void printSummary(const RunArguments& arguments, const MeasurementLog& log, cons
     std::printf("%s on %s: %zu steps, %lld components at the end, entropy %.4g, err_wmax %.4g m, time %.3f s\n",
                 m.method.c_str(), arguments.in.c_str(), log.steps.size(), m.components.value_or(0), m.entropy,
                 m.errWmax, m.timeSeconds);
-    const std::string bounds = describeBoundsThatBound(run.hybridSteps, arguments.options.hybrid);
+    const std::string bounds = describeBoundsThatBound(run.hybridReports, arguments.options.hybrid);
     if (!bounds.empty()) std::fprintf(stderr, "note: %s\n", bounds.c_str());
   } else {
     std::printf("%s: ATE %.4f m, DA accuracy %.4f, landmarks %lld (true %lld), time %.2f s\n",

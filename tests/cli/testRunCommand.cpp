@@ -47,6 +47,11 @@ TEST(RunCommand, AHybridMemoryBoundThatBindsIsNotedAndTheRunFinishes) {
   ASSERT_EQ(defaults.exitCode, 0) << defaults.output;
   EXPECT_EQ(defaults.output.find("memory bounds"), std::string::npos) << defaults.output;
   EXPECT_NE(runSemslam(run + " --method hybrid --max-candidates 0 --out \"" + (dir / "d").string() + "\"").exitCode, 0);
+  // A memory budget that holds not one component: a message and a non-zero exit, no run folder.
+  const auto starved = runSemslam(run + " --method hybrid --max-memory 0.001 --out \"" + (dir / "e").string() + "\"");
+  EXPECT_NE(starved.exitCode, 0);
+  EXPECT_NE(starved.output.find("raise --max-memory"), std::string::npos) << starved.output;
+  EXPECT_FALSE(fs::exists(dir / "e" / "metrics.json"));
   fs::remove_all(dir);
 }
 

@@ -47,7 +47,7 @@ HybridOptions unpruned(WeightMethod method, int samples = 1000) {
 /// The weight of the component associating detection 0 with object j.
 double weightOf(const HybridBelief& belief, int object) {
   for (const HybridComponent& c : belief.components()) {
-    if (c.history.back()[0] == object) return c.weight;
+    if (c.history.back()[0] == belief.problem().objectId(object)) return c.weight;  // histories hold log ids
   }
   return 0.0;
 }
@@ -210,7 +210,7 @@ TEST(HybridBelief, GeometricModeEnumeratesNoClasses) {
   options.samples = 100;
   const HybridRunOutput out = runHybrid(log, options);
   for (const HypothesisComponent& c : out.result.components) EXPECT_TRUE(c.classes.empty());
-  EXPECT_EQ(out.steps.back().marginals.classes.size(), 0);
+  EXPECT_EQ(out.finalMarginals.classes.size(), 0);
   EXPECT_EQ(out.result.method, "hybrid-geometric");
 }
 
@@ -225,8 +225,8 @@ TEST(HybridBelief, OneDetectionAtATimeAgreesWithWholeAssociationsWhenNothingIsPr
   sequential.branching = Branching::OneDetectionAtATime;
   sequential.jointCompatibility = 1.0 - 1e-12;  // keeps practically everything
   const HybridRunOutput a = runHybrid(log, whole), b = runHybrid(log, sequential);
-  const auto& ma = a.steps.back().marginals.association;
-  const auto& mb = b.steps.back().marginals.association;
+  const auto& ma = a.finalMarginals.association;
+  const auto& mb = b.finalMarginals.association;
   ASSERT_FALSE(ma.empty());
   EXPECT_EQ(ma.front().associations, mb.front().associations);
   EXPECT_NEAR(ma.front().weight, mb.front().weight, 1e-6);
@@ -244,20 +244,20 @@ TEST(HybridBelief, PastTheCandidateBoundAWholeStepBranchesOneDetectionAtATimeAnd
   bounded.useSemantics = false;
   bounded.maxCandidates = 29;  // 6 · 5 = 30 whole associations
   const HybridRunOutput out = runHybrid(log, bounded);
-  const PropWeightsReport& report = out.steps.front().report.weights;
+  const PropWeightsReport& report = out.reports.front().weights;
   EXPECT_TRUE(report.branchedOneAtATime);
   EXPECT_EQ(report.wholeAssociationBound, 30.0);
   EXPECT_LE(report.candidates, 29u);
-  const std::string note = describeBoundsThatBound(out.steps, bounded);
+  const std::string note = describeBoundsThatBound(out.reports, bounded);
   EXPECT_NE(note.find("branched one detection at a time"), std::string::npos) << note;
   EXPECT_NE(note.find("--max-candidates 29"), std::string::npos) << note;
 
   HybridOptions loose = bounded;
   loose.maxCandidates = 30;
   const HybridRunOutput whole = runHybrid(log, loose);
-  EXPECT_FALSE(whole.steps.front().report.weights.branchedOneAtATime);
-  EXPECT_EQ(whole.steps.front().report.weights.candidates, 30u);
-  EXPECT_EQ(describeBoundsThatBound(whole.steps, loose), "");
+  EXPECT_FALSE(whole.reports.front().weights.branchedOneAtATime);
+  EXPECT_EQ(whole.reports.front().weights.candidates, 30u);
+  EXPECT_EQ(describeBoundsThatBound(whole.reports, loose), "");
 }
 
 TEST(HybridBelief, OneDetectionAtATimeKeepsAtMostTheCandidateBoundOfPartialAssociations) {
@@ -271,10 +271,10 @@ TEST(HybridBelief, OneDetectionAtATimeKeepsAtMostTheCandidateBoundOfPartialAssoc
   options.gateRatio = 0.0;
   options.maxCandidates = 3;
   const HybridRunOutput out = runHybrid(log, options);
-  const HybridStepReport& report = out.steps.front().report;
+  const HybridStepReport& report = out.reports.front();
   EXPECT_LE(report.weights.candidates, 3u);
   EXPECT_GT(report.weights.truncatedPartials, 0u);
-  EXPECT_NE(describeBoundsThatBound(out.steps, options).find("heaviest partial associations"), std::string::npos);
+  EXPECT_NE(describeBoundsThatBound(out.reports, options).find("heaviest partial associations"), std::string::npos);
 }
 
 TEST(HybridBelief, TheComponentCapIsReportedWhenItBinds) {
@@ -286,8 +286,50 @@ TEST(HybridBelief, TheComponentCapIsReportedWhenItBinds) {
   options.maxComponents = 2;
   const HybridRunOutput out = runHybrid(log, options);
   EXPECT_EQ(out.result.components.size(), 2u);
-  EXPECT_EQ(out.steps.front().report.cappedComponents, 1u);
-  EXPECT_NE(describeBoundsThatBound(out.steps, options).find("--max-components 2"), std::string::npos);
+  EXPECT_EQ(out.reports.front().cappedComponents, 1u);
+  EXPECT_NE(describeBoundsThatBound(out.reports, options).find("--max-components 2"), std::string::npos);
+}
+
+TEST(HybridBelief, TheMemoryBoundKeepsFewerComponentsAndSaysSo) {
+  // Three equally plausible objects: three children. A budget sized from the smoother's own count holds two.
+  const MeasurementLog log = linearToyLog({Point2(1, 0), Point2(1.1, 0), Point2(1.2, 0)}, {Vector2(1.1, 0)});
+  HybridOptions options;
+  options.weights = WeightMethod::Analytic;
+  options.useSemantics = false;
+  options.pruneRatio = 0.0;
+  const HybridRunOutput unbounded = runHybrid(log, options);
+  ASSERT_EQ(unbounded.result.components.size(), 3u);
+  const double componentBytes = unbounded.reports.front().componentBytes;
+  ASSERT_GT(componentBytes, 0.0);
+  EXPECT_EQ(unbounded.reports.front().memoryCappedComponents, 0u);
+
+  HybridOptions bounded = options;
+  bounded.maxMemoryMiB = 3.0 * 2.5 * componentBytes / (1024.0 * 1024.0);  // room for 2.5 components, 3 copies each
+  const HybridRunOutput out = runHybrid(log, bounded);
+  EXPECT_EQ(out.result.components.size(), 2u);
+  EXPECT_EQ(out.reports.front().cappedComponents, 1u);
+  EXPECT_EQ(out.reports.front().memoryCappedComponents, 1u);
+  const std::string note = describeBoundsThatBound(out.reports, bounded);
+  EXPECT_NE(note.find("the memory bound (--max-memory"), std::string::npos) << note;
+  EXPECT_EQ(note.find("the component cap"), std::string::npos) << note;  // the count cap did not bind
+
+  // Where the count cap binds first, the memory bound is not blamed.
+  HybridOptions counted = bounded;
+  counted.maxComponents = 1;
+  const HybridRunOutput countedOut = runHybrid(log, counted);
+  EXPECT_EQ(countedOut.reports.front().cappedComponents, 2u);
+  EXPECT_EQ(countedOut.reports.front().memoryCappedComponents, 0u);
+
+  // A budget that holds not one component: a message naming the bound, not a crash.
+  HybridOptions tiny = options;
+  tiny.maxMemoryMiB = 0.5 * componentBytes / (1024.0 * 1024.0);
+  try {
+    runHybrid(log, tiny);
+    FAIL() << "expected the memory bound to refuse the step";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find("raise --max-memory"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("step 0"), std::string::npos) << error.what();
+  }
 }
 
 TEST(HybridBelief, RejectsLogsWithoutAMapOrInitialPrior) {

@@ -21,7 +21,7 @@ outside=$(grep -v "^$prefix/" "$build_dir/install_manifest.txt" || true)
 for file in bin/semslam include/semslam/solve/Optimizer.h include/semslam/core/Version.h \
             lib/cmake/semslam/semslamConfig.cmake lib/cmake/semslam/semslamConfigVersion.cmake \
             lib/cmake/semslam/FindCHOLMOD.cmake lib/pkgconfig/semslam.pc share/semslam/python/plot_run.py \
-            share/semslam/python/plot_methods.py share/semslam/python/paired_statistics.py \
+            share/semslam/python/plot_methods.py share/semslam/python/paired_statistics.py share/semslam/python/hypotheses.py \
             share/doc/semslam/LICENSE share/doc/semslam/CITATION.cff; do
   [ -e "$prefix/$file" ] || fail "$file was not installed"
 done

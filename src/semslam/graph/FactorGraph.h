@@ -25,6 +25,8 @@ class FactorGraph {
   }
 
   std::size_t size() const { return factors_.size(); }
+  /// Heap bytes of the factor list itself; the factors are shared and not counted.
+  std::size_t memoryBytes() const { return factors_.capacity() * sizeof(FactorPtr); }
   bool empty() const { return factors_.empty(); }
   const FactorPtr& operator[](std::size_t i) const { return factors_[i]; }
   const_iterator begin() const { return factors_.begin(); }

@@ -8,6 +8,8 @@
 #include <map>
 #include <string>
 #include <variant>
+
+#include "semslam/core/MemoryBytes.h"
 #include <vector>
 
 #include "semslam/geometry/Manifold.h"
@@ -46,6 +48,8 @@ class Values {
 
   bool exists(Key key) const { return values_.count(key) != 0; }
   std::size_t size() const { return values_.size(); }
+  /// Heap bytes held (core/MemoryBytes.h).
+  std::size_t memoryBytes() const { return mapBytes(values_); }
   bool empty() const { return values_.empty(); }
 
   /// The variable as type T; throws std::out_of_range if absent or of another type.

@@ -1,7 +1,11 @@
 #include "semslam/hybrid/HybridBelief.h"
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
 
 #include "semslam/hybrid/Pruning.h"
 #include "semslam/core/InputError.h"
@@ -13,6 +17,27 @@ std::mt19937 runStream(std::uint64_t seed) {
   std::seed_seq sequence{static_cast<std::uint32_t>(seed & 0xffffffffu), static_cast<std::uint32_t>(seed >> 32),
                          0x4b1d0001u};
   return std::mt19937(sequence);
+}
+
+/// How many children the memory budget holds at step k (HybridOptions::maxMemoryMiB): each child will hold about
+/// what its propagated parent holds now (its estimate and the factorization its joint marginal was read from),
+/// and the previous components, their propagated copies and the children are alive at once. `componentBytes`
+/// receives the largest parent's size. Throws std::runtime_error when not one component fits.
+int componentsWithinMemory(const std::vector<PropagatedParent>& parents, double maxMemoryMiB, int k,
+                           double& componentBytes) {
+  std::size_t largest = 0;
+  for (const PropagatedParent& parent : parents) largest = std::max(largest, parent.smoother->memoryBytes());
+  componentBytes = static_cast<double>(largest);
+  const double budget = maxMemoryMiB * 1024.0 * 1024.0;
+  const double fits = std::floor(budget / (3.0 * std::max(componentBytes, 1.0)));
+  if (fits < 1.0) {
+    char sizes[160];
+    std::snprintf(sizes, sizeof sizes, "one component's smoother holds %.3g MiB and a step holds three copies, more "
+                  "than --max-memory %.6g MiB", componentBytes / (1024.0 * 1024.0), maxMemoryMiB);
+    throw std::runtime_error("hybrid belief, step " + std::to_string(k) + ": " + sizes +
+                             "; raise --max-memory (docs/hybrid-belief.md, \"Bounded memory\")");
+  }
+  return static_cast<int>(std::min(fits, 1e9));
 }
 
 }  // namespace
@@ -30,9 +55,9 @@ HybridBelief::HybridBelief(const HybridProblem& problem, HybridOptions options)
 
   const int n = problem_.objects();
   if (!problem_.enumeratesClasses()) {
-    components_.push_back({1.0, {}, {}, shared});
+    components_.push_back({1.0, {}, -1, {}, shared});
   } else if (!options_.enumerateAllClasses) {
-    components_.push_back({1.0, {}, std::vector<int>(n, -1), shared});
+    components_.push_back({1.0, {}, -1, std::vector<int>(n, -1), shared});
   } else {
     const int m = problem_.classes();
     const double count = std::pow(static_cast<double>(m), n);
@@ -44,7 +69,7 @@ HybridBelief::HybridBelief(const HybridProblem& problem, HybridOptions options)
         classes[j] = static_cast<int>(code % m);
         code /= m;
       }
-      components_.push_back({1.0 / count, {}, classes, shared});
+      components_.push_back({1.0 / count, {}, -1, classes, shared});
     }
   }
 }
@@ -95,19 +120,29 @@ HybridStepReport HybridBelief::update(const TimeStep& step) {
   // 3. PruneAndNormalize (line 7).
   std::vector<double> logWeights;
   for (const AssociationCandidate& c : candidates) logWeights.push_back(c.logWeight);
-  const PruningResult pruned = pruneAndNormalize(logWeights, options_.pruneRatio, options_.maxComponents);
+  const int memoryCap = componentsWithinMemory(parents, options_.maxMemoryMiB, k, report.componentBytes);
+  const int cap = options_.maxComponents > 0 ? std::min(options_.maxComponents, memoryCap) : memoryCap;
+  const PruningResult pruned = pruneAndNormalize(logWeights, options_.pruneRatio, cap);
   report.prunedMass = pruned.prunedMass;
   report.cappedComponents = pruned.capped;
+  const std::size_t passedRatio = pruned.kept.size() + pruned.capped;
+  const std::size_t countCapped = options_.maxComponents > 0 && passedRatio > std::size_t(options_.maxComponents)
+                                      ? passedRatio - static_cast<std::size_t>(options_.maxComponents)
+                                      : 0;
+  report.memoryCappedComponents = pruned.capped - countCapped;
 
   // 4. Observation update of the survivors (lines 9-11): b[X_k] ∝ P(Z_k | X_k, C, β_k) b⁻[X_k] (A, eq. 9-10).
   std::vector<HybridComponent> next;
+  HistoryInterner histories;  // children with equal histories share them (class realizations of one β_1:k)
   for (std::size_t s = 0; s < pruned.kept.size(); ++s) {
     const AssociationCandidate& c = candidates[pruned.kept[s]];
     const PropagatedParent& parent = parents[c.parent];
     HybridComponent child;
     child.weight = pruned.weights[s];
-    child.history = parent.component->history;
-    child.history.push_back(c.beta);
+    std::vector<int> ids;
+    for (int object : c.beta) ids.push_back(object >= 0 ? problem_.objectId(object) : -1);
+    child.history = histories.extend(parent.component->history, ids);
+    child.ancestor = k == 0 ? -1 : static_cast<int>(c.parent);  // the prior's components are no step
     child.classes = c.classes;
     if (c.factors.empty()) {
       child.smoother = parent.smoother;

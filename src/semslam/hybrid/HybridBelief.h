@@ -32,6 +32,8 @@ struct HybridStepReport {
   std::size_t survivors = 0;
   double prunedMass = 0.0;
   std::size_t cappedComponents = 0;  ///< survivors of the pruning ratio dropped by HybridOptions::maxComponents
+  std::size_t memoryCappedComponents = 0;  ///< of those, dropped because HybridOptions::maxMemoryMiB bound first
+  double componentBytes = 0.0;       ///< the estimate per child component the memory bound used (bytes)
   PropWeightsReport weights;
   double seconds = 0.0;
 };

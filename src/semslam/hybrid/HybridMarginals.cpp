@@ -11,11 +11,8 @@ HybridMarginals hybridMarginals(const HybridBelief& belief) {
   for (const HybridComponent& c : belief.components()) {
     HypothesisComponent h;
     h.weight = c.weight;
-    for (const std::vector<int>& beta : c.history) {
-      std::vector<int> ids;
-      for (int object : beta) ids.push_back(object >= 0 ? problem.objectId(object) : -1);
-      h.associations.push_back(ids);
-    }
+    h.associations = c.history;
+    out.ancestors.push_back(c.ancestor);
     h.classes = c.classes;
     h.pose = c.smoother->estimate<SE2>(pose);
     h.covariance = c.smoother->marginalCovariance(pose);

@@ -4,6 +4,7 @@
 //   components         each component as a HypothesisComponent (models/HypothesisComponent.h): weight, β_1:k with the log's object ids
 //                      (−1 for a dropped detection), the class of every object (−1: not associated, collapsed),
 //                      mean and covariance (right perturbation, translation first) of the current pose x_k;
+//   ancestors          per component, the index of the component of step k − 1 it branched from (−1 at k = 0);
 //   association        P(β_1:k | H_k) = Σ_C w^C_β1:k (eq. 8), heaviest first;
 //   classes            P(c_j = m | H_k) = Σ_i w_i P_i(c_j = m) (eq. 7, per object), where a component with c_j
 //                      collapsed contributes its weight uniformly, P_i(c_j = m) = 1/M (exact under the uniform
@@ -25,6 +26,7 @@ namespace semslam {
 struct HybridMarginals {
   int step = 0;
   std::vector<HypothesisComponent> components;
+  std::vector<int> ancestors;
   std::vector<AssociationHypothesis> association;
   Matrix classes;  ///< N x M, empty without semantics
   Vector2 mixtureMean = Vector2::Zero();

@@ -42,6 +42,9 @@ void HybridOptions::validate() const {
   }
   if (maxComponents < 0) throw std::invalid_argument("hybrid: max components must be >= 0");
   if (maxCandidates < 1) throw std::invalid_argument("hybrid: max candidates must be >= 1");
+  if (!(maxMemoryMiB > 0.0) || !std::isfinite(maxMemoryMiB)) {
+    throw std::invalid_argument("hybrid: max memory must be a positive number of MiB");
+  }
 }
 
 }  // namespace semslam

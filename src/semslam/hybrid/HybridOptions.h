@@ -29,6 +29,14 @@
 //                       detection at a time instead (reported: PropWeightsReport::branchedOneAtATime).
 //                       OneDetectionAtATime keeps at most this many partial associations between detections, the
 //                       heaviest by linearised weight (reported: truncatedPartials).
+//   maxMemoryMiB        the memory the belief's smoothers may hold, in MiB. Before the observation update of a step
+//                       the belief reads the largest propagated component's Smoother::memoryBytes() (its estimate,
+//                       index and cached factorization: what each child will hold); during a step the previous
+//                       components, their propagated copies and the children are alive at once, so at most
+//                       floor(budget / (3 · that)) children are kept, the heaviest (reported:
+//                       HybridStepReport::memoryCappedComponents). A budget that holds not one component throws
+//                       std::runtime_error naming the step and both sizes. The count is deterministic (container
+//                       sizes, not the allocator's), so the same seed gives the same belief on any machine.
 //   enumerateAllClasses start from all M^N class realizations instead of collapsing unassociated objects
 //                       (A sec. IV-D); for tests that check collapsing.
 //   visibility          multiply sampled weights by the object observation model P(β_k | x_k, X^o) (A eq. 14-16).
@@ -59,6 +67,7 @@ SmootherFactory defaultSmootherFactory();
 struct HybridOptions {
   static constexpr int kDefaultMaxComponents = 1000;
   static constexpr int kDefaultMaxCandidates = 100000;
+  static constexpr double kDefaultMaxMemoryMiB = 2048.0;
 
   bool useSemantics = true;
   WeightMethod weights = WeightMethod::Sampled;
@@ -70,13 +79,14 @@ struct HybridOptions {
   double jointCompatibility = 0.999;
   int maxComponents = kDefaultMaxComponents;
   int maxCandidates = kDefaultMaxCandidates;
+  double maxMemoryMiB = kDefaultMaxMemoryMiB;
   bool enumerateAllClasses = false;
   bool visibility = true;
   std::uint64_t seed = 1;
   SmootherFactory smootherFactory;  // empty: defaultSmootherFactory()
 
   /// Throws std::invalid_argument for samples < 2, importanceIterations < 1, non-finite ratios, jointCompatibility outside (0, 1),
-  /// maxComponents < 0 or maxCandidates < 1.
+  /// maxComponents < 0, maxCandidates < 1 or a maxMemoryMiB that is not a positive finite number.
   void validate() const;
 };
 

@@ -6,7 +6,8 @@
 
 namespace semslam {
 
-HybridRunOutput runHybrid(const MeasurementLog& log, const HybridOptions& options, const HybridProgress& progress) {
+HybridRunOutput runHybrid(const MeasurementLog& log, const HybridOptions& options, const HybridProgress& progress,
+                          const HybridStepObserver& observer) {
   const auto start = std::chrono::steady_clock::now();
   const HybridProblem problem(log.header, options.useSemantics);
   HybridBelief belief(problem, options);
@@ -17,13 +18,15 @@ HybridRunOutput runHybrid(const MeasurementLog& log, const HybridOptions& option
     record.report = belief.update(log.steps[k]);
     record.marginals = hybridMarginals(belief);
     out.result.heaviestAssociationWeights.push_back(record.marginals.association.front().weight);  // max_β P(β | H_k)
-    out.steps.push_back(std::move(record));
+    out.reports.push_back(record.report);
+    if (observer) observer(record);
+    if (k + 1 == steps) out.finalMarginals = std::move(record.marginals);
     if (progress) progress(k + 1, steps);
   }
 
   RunResult& result = out.result;
   result.method = options.useSemantics ? "hybrid" : "hybrid-geometric";
-  if (!out.steps.empty()) {
+  if (steps > 0) {
     const HybridComponent& best = belief.components()[belief.heaviest()];
     const Smoother& smoother = *best.smoother;
     for (int k = 0; k < steps; ++k) {
@@ -31,14 +34,12 @@ HybridRunOutput runHybrid(const MeasurementLog& log, const HybridOptions& option
       result.poses.push_back(smoother.estimate<SE2>(key));
       result.poseCovariances.push_back(smoother.marginalCovariance(key));
     }
-    for (const std::vector<int>& beta : best.history) {
+    for (const std::vector<int>& beta : best.history.steps()) {
       std::vector<std::optional<int>> ids;
-      for (int object : beta) {
-        ids.push_back(object >= 0 ? std::optional<int>(problem.objectId(object)) : std::nullopt);
-      }
+      for (int id : beta) ids.push_back(id >= 0 ? std::optional<int>(id) : std::nullopt);
       result.associations.push_back(ids);
     }
-    const Matrix& classMarginal = out.steps.back().marginals.classes;
+    const Matrix& classMarginal = out.finalMarginals.classes;
     for (int j = 0; j < problem.objects(); ++j) {
       EstimatedLandmark landmark;
       landmark.id = problem.objectId(j);
@@ -51,26 +52,31 @@ HybridRunOutput runHybrid(const MeasurementLog& log, const HybridOptions& option
       if (classMarginal.size() > 0) landmark.classProbabilities = classMarginal.row(j).transpose();
       result.landmarks.push_back(landmark);
     }
-    result.components = out.steps.back().marginals.components;
+    result.components = out.finalMarginals.components;
   }
   result.timeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
 
-std::string describeBoundsThatBound(const std::vector<HybridStepRecord>& steps, const HybridOptions& options) {
-  int branched = 0, truncated = 0, capped = 0;
-  double largestBound = 0.0;
-  std::size_t largestCapped = 0;
-  for (const HybridStepRecord& step : steps) {
-    const PropWeightsReport& weights = step.report.weights;
+std::string describeBoundsThatBound(const std::vector<HybridStepReport>& reports, const HybridOptions& options) {
+  int branched = 0, truncated = 0, capped = 0, memoryCapped = 0;
+  double largestBound = 0.0, largestComponentBytes = 0.0;
+  std::size_t largestCapped = 0, largestMemoryCapped = 0;
+  for (const HybridStepReport& report : reports) {
+    const PropWeightsReport& weights = report.weights;
     if (weights.branchedOneAtATime) {
       ++branched;
       largestBound = std::max(largestBound, weights.wholeAssociationBound);
     }
     if (weights.truncatedPartials > 0) ++truncated;
-    if (step.report.cappedComponents > 0) {
+    if (report.cappedComponents > report.memoryCappedComponents) {
       ++capped;
-      largestCapped = std::max(largestCapped, step.report.cappedComponents);
+      largestCapped = std::max(largestCapped, report.cappedComponents - report.memoryCappedComponents);
+    }
+    if (report.memoryCappedComponents > 0) {
+      ++memoryCapped;
+      largestMemoryCapped = std::max(largestMemoryCapped, report.memoryCappedComponents);
+      largestComponentBytes = std::max(largestComponentBytes, report.componentBytes);
     }
   }
   std::ostringstream text;
@@ -86,6 +92,11 @@ std::string describeBoundsThatBound(const std::vector<HybridStepRecord>& steps, 
   if (capped > 0) {
     text << "the component cap (--max-components " << options.maxComponents << ") dropped up to " << largestCapped
          << " components at " << capped << " step(s); ";
+  }
+  if (memoryCapped > 0) {
+    text << "the memory bound (--max-memory " << options.maxMemoryMiB << " MiB, components of up to "
+         << largestComponentBytes / (1024.0 * 1024.0) << " MiB) dropped up to " << largestMemoryCapped
+         << " components at " << memoryCapped << " step(s); ";
   }
   std::string sentence = text.str();
   if (sentence.empty()) return sentence;

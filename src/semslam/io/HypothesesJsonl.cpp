@@ -1,7 +1,6 @@
 #include "semslam/io/HypothesesJsonl.h"
 
 #include <cmath>
-#include <stdexcept>
 #include <nlohmann/json.hpp>
 
 #include "semslam/io/AtomicFile.h"
@@ -28,10 +27,12 @@ std::string hypothesesJsonLine(const HybridStepRecord& record, const HypothesisM
   nlohmann::json line;
   line["step"] = m.step;
   nlohmann::json components = nlohmann::json::array();
-  for (const HypothesisComponent& c : m.components) {
+  for (std::size_t i = 0; i < m.components.size(); ++i) {
+    const HypothesisComponent& c = m.components[i];
     const SE2& x = std::get<SE2>(c.pose);
     components.push_back({{"weight", number(c.weight)},
-                          {"associations", c.associations},
+                          {"ancestor", m.ancestors.at(i)},
+                          {"beta", c.associations.empty() ? std::vector<int>() : c.associations.back()},
                           {"classes", c.classes},
                           {"pose", {x.translation().x(), x.translation().y(), x.theta()}},
                           {"covariance", matrix(c.covariance)}});
@@ -39,7 +40,7 @@ std::string hypothesesJsonLine(const HybridStepRecord& record, const HypothesisM
   line["components"] = components;
   nlohmann::json association = nlohmann::json::array();
   for (const AssociationHypothesis& a : m.association) {
-    association.push_back({{"associations", a.associations}, {"weight", number(a.weight)}});
+    association.push_back({{"component", a.firstComponent}, {"weight", number(a.weight)}});
   }
   line["association_marginal"] = association;
   line["class_marginal"] = m.classes.size() > 0 ? matrix(m.classes) : nlohmann::json::array();
@@ -56,6 +57,8 @@ std::string hypothesesJsonLine(const HybridStepRecord& record, const HypothesisM
                     {"gate_lost_mass", number(r.weights.gateLostMass)},
                     {"pruned_mass", number(r.prunedMass)},
                     {"survivors", r.survivors},
+                    {"capped_components", r.cappedComponents},
+                    {"memory_capped_components", r.memoryCappedComponents},
                     {"dropped_detections", r.weights.droppedDetections},
                     {"fell_back_to_linearized", r.weights.fellBackToLinearized},
                     {"analytic_total_variation", number(r.weights.analyticTotalVariation)},
@@ -65,12 +68,8 @@ std::string hypothesesJsonLine(const HybridStepRecord& record, const HypothesisM
   return line.dump();
 }
 
-void writeHypothesesJsonl(const std::string& path, const std::vector<HybridStepRecord>& steps,
-                          const std::vector<HypothesisMetrics>& metrics) {
-  if (metrics.size() != steps.size()) throw std::invalid_argument("hypotheses.jsonl: one metrics record per step");
-  std::string text;
-  for (std::size_t k = 0; k < steps.size(); ++k) text += hypothesesJsonLine(steps[k], metrics[k]) + "\n";
-  writeFileAtomically(path, [&](std::ostream& out) { out << text; });
+void writeHypothesesJsonl(const std::string& path, const SpooledText& lines) {
+  writeFileAtomically(path, [&](std::ostream& out) { lines.copyTo(out); });
 }
 
 }  // namespace semslam

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <unordered_map>
 #include <string>
 
 #include "semslam/core/InputError.h"
@@ -31,11 +31,13 @@ std::vector<double> normalizeWeights(const std::vector<double>& weights) {
 
 std::vector<AssociationHypothesis> associationMarginal(const std::vector<HypothesisComponent>& components) {
   const std::vector<double> weights = normalizeWeights(componentWeights(components));
-  std::map<AssociationHistory, double> marginal;
-  for (std::size_t i = 0; i < components.size(); ++i) marginal[components[i].associations] += weights[i];
+  std::unordered_map<AssociationHistory, std::size_t, AssociationHistoryHash> index;  // history -> out's entry
   std::vector<AssociationHypothesis> out;
-  out.reserve(marginal.size());
-  for (auto& [history, weight] : marginal) out.push_back({history, weight});
+  for (std::size_t i = 0; i < components.size(); ++i) {
+    const auto [entry, inserted] = index.try_emplace(components[i].associations, out.size());
+    if (inserted) out.push_back({components[i].associations, 0.0, i});
+    out[entry->second].weight += weights[i];
+  }
   std::stable_sort(out.begin(), out.end(),
                    [](const AssociationHypothesis& a, const AssociationHypothesis& b) { return a.weight > b.weight; });
   return out;

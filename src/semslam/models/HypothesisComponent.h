@@ -13,12 +13,10 @@
 #include <vector>
 
 #include "semslam/geometry/Matrix.h"
+#include "semslam/models/AssociationHistory.h"
 #include "semslam/models/MeasurementLog.h"
 
 namespace semslam {
-
-/// β_1:k: for each time step, the landmark id each detection of that step is associated with.
-using AssociationHistory = std::vector<std::vector<int>>;
 
 /// One component of a hybrid belief at the current time k.
 struct HypothesisComponent {
@@ -31,7 +29,8 @@ struct HypothesisComponent {
 
 struct AssociationHypothesis {
   AssociationHistory associations;
-  double weight = 0.0;  ///< P(β_1:k | H_k)
+  double weight = 0.0;             ///< P(β_1:k | H_k)
+  std::size_t firstComponent = 0;  ///< the first component (input order) with this history
 };
 
 /// The components' weights, in order.
@@ -39,7 +38,8 @@ std::vector<double> componentWeights(const std::vector<HypothesisComponent>& com
 /// w_i / Σ w; throws InputError for an empty vector, negative or non-finite weights, or a zero sum.
 std::vector<double> normalizeWeights(const std::vector<double>& weights);
 
-/// Eq. 8: the association marginal, heaviest first (ties: lexicographically smaller history first).
+/// Eq. 8: the association marginal, heaviest first (ties: in the order of their first components). O(C) for
+/// histories that share nodes (AssociationHistory.h), hashed otherwise.
 std::vector<AssociationHypothesis> associationMarginal(const std::vector<HypothesisComponent>& components);
 /// Eq. 7 per object: row j holds P(c_j = m), m = 0..classes−1. Every component must have the same number of
 /// objects, with classes in [0, classes).

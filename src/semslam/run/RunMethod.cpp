@@ -49,12 +49,12 @@ void runSemanticSlam(const MeasurementLog& log, const MethodOptions& options, co
 std::vector<AssociationRecord> hybridAssociationRecords(const MeasurementLog& log, const HybridRunOutput& hybrid) {
   const RunResult& result = hybrid.result;
   double historyWeight = 1.0;
-  if (!hybrid.steps.empty() && !result.components.empty()) {
+  if (!hybrid.reports.empty() && !result.components.empty()) {
     std::size_t best = 0;
     for (std::size_t i = 1; i < result.components.size(); ++i) {
       if (result.components[i].weight > result.components[best].weight) best = i;
     }
-    for (const AssociationHypothesis& a : hybrid.steps.back().marginals.association) {
+    for (const AssociationHypothesis& a : hybrid.finalMarginals.association) {
       if (a.associations == result.components[best].associations) historyWeight = a.weight;
     }
   }
@@ -76,16 +76,18 @@ void runHybridBelief(const MeasurementLog& log, const MethodOptions& options, co
   if (options.smoother == SmootherKind::Incremental) {
     hybridOptions.smootherFactory = smootherFactory(SmootherKind::Incremental);
   }
-  HybridRunOutput hybrid = runHybrid(log, hybridOptions, progress);
+  if (options.runFolder) run.hypothesesJsonl.emplace();
+  const HybridStepObserver observe = [&](const HybridStepRecord& record) {
+    const int k = record.marginals.step;
+    run.hybridStepMetrics.push_back(evaluateHypotheses(record.marginals.components, log.steps[k].truePose));
+    if (run.hypothesesJsonl) run.hypothesesJsonl->append(hypothesesJsonLine(record, run.hybridStepMetrics.back()) + "\n");
+  };
+  HybridRunOutput hybrid = runHybrid(log, hybridOptions, progress, observe);
   run.evaluation = evaluateRun(log, hybrid.result);
-  if (options.runFolder) {
-    for (std::size_t k = 0; k < hybrid.steps.size(); ++k) {
-      run.hybridStepMetrics.push_back(evaluateHypotheses(hybrid.steps[k].marginals.components, log.steps[k].truePose));
-    }
-    run.output = runOutputFrom(log, hybrid.result, hybridAssociationRecords(log, hybrid));
-  }
+  if (options.runFolder) run.output = runOutputFrom(log, hybrid.result, hybridAssociationRecords(log, hybrid));
   run.result = std::move(hybrid.result);
-  run.hybridSteps = std::move(hybrid.steps);
+  run.hybridReports = std::move(hybrid.reports);
+  run.hybridFinal = std::move(hybrid.finalMarginals);
 }
 
 }  // namespace
@@ -109,7 +111,7 @@ void writeMethodRun(const std::string& directory, const MethodRun& run) {
   writeRunFolder(directory, run.output);
   writeRunMetrics((dir / "metrics.json").string(), run.evaluation.metrics);
   if (isHybrid(run.method)) {
-    writeHypothesesJsonl((dir / "hypotheses.jsonl").string(), run.hybridSteps, run.hybridStepMetrics);
+    writeHypothesesJsonl((dir / "hypotheses.jsonl").string(), *run.hypothesesJsonl);
   }
 }
 

@@ -13,7 +13,8 @@
 //
 // The run folder (`output`, written by writeMethodRun): metrics.json (io/RunMetricsFile.h), trajectory.tum,
 // truth.tum, landmarks.csv, landmarks_truth.csv, covariances.csv, associations.csv (io/RunFolder.h), and for the
-// hybrid methods hypotheses.jsonl (io/HypothesesJsonl.h: every step's belief and its metrics). An association's
+// hybrid methods hypotheses.jsonl (io/HypothesesJsonl.h: every step's belief and its metrics, spooled to a
+// temporary file as the run goes, so that a long run does not hold them in memory). An association's
 // weight is the method's own: paper B's normalised association probability of the chosen landmark, paper A's
 // association marginal P(β_1:k | H_k) (A, eq. 8) of the heaviest component's history.
 //
@@ -32,6 +33,7 @@
 #include "semslam/hybrid/HybridOptions.h"
 #include "semslam/hybrid/HybridRun.h"
 #include "semslam/io/RunFolder.h"
+#include "semslam/io/SpooledText.h"
 #include "semslam/run/Method.h"
 #include "semslam/slam/SemanticSlam.h"
 #include "semslam/solve/SmootherFactory.h"
@@ -53,9 +55,11 @@ struct MethodRun {
   RunEvaluation evaluation;  ///< scored against the log's truth
   RunOutput output;          ///< the run folder's contents (when options.runFolder)
   std::size_t factors = 0;   ///< paper B: factors in the final graph
-  std::vector<HybridStepRecord> hybridSteps;       ///< paper A: what the belief said and did at every step
-  std::vector<HypothesisMetrics> hybridStepMetrics;///< paper A: eval's metrics of each step's belief (runFolder)
-  bool hasRunFolder = false;                       ///< `output` was built (options.runFolder)
+  std::vector<HybridStepReport> hybridReports;      ///< paper A: what the update did at every step
+  std::vector<HypothesisMetrics> hybridStepMetrics; ///< paper A: eval's metrics of the belief at every step
+  HybridMarginals hybridFinal;                      ///< paper A: what the belief said at the last step
+  std::optional<SpooledText> hypothesesJsonl;       ///< paper A: hypotheses.jsonl's lines (options.runFolder)
+  bool hasRunFolder = false;                        ///< `output` was built (options.runFolder)
 };
 
 /// Progress callback: (steps done, steps in all).

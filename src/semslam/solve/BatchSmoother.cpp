@@ -71,4 +71,8 @@ FactorGraph BatchSmoother::factors() const {
 
 std::unique_ptr<Smoother> BatchSmoother::fork() const { return std::make_unique<BatchSmoother>(*this); }
 
+std::size_t BatchSmoother::memoryBytes() const {
+  return vectorBytes(slots_) + estimate_.memoryBytes() + (marginals_ ? marginals_->memoryBytes() : 0);
+}
+
 }  // namespace semslam

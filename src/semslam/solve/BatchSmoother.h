@@ -26,6 +26,7 @@ class BatchSmoother final : public Smoother {
   JointMarginal jointMarginal(const std::vector<Key>& keys) const override;
   FactorGraph factors() const override;
   std::unique_ptr<Smoother> fork() const override;
+  std::size_t memoryBytes() const override;
 
   /// The result of the last solve (iterations, chi2, stop reason).
   const OptimizationResult& lastResult() const { return lastResult_; }

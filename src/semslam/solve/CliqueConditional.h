@@ -47,6 +47,9 @@ struct CliqueConditional {
   /// Δ_F = R⁻¹ (z − T Δ_S), into `frontalDelta` (of the frontal dimension).
   void solve(Eigen::Ref<const Vector> separatorDelta, Eigen::Ref<Vector> frontalDelta) const;
 
+  /// Heap bytes held (R, T, z).
+  std::size_t memoryBytes() const { return storage_.capacity() * sizeof(double); }
+
  private:
   void allocate(int frontalDimension, int separatorDimension);
   std::vector<double> storage_;

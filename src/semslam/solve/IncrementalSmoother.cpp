@@ -734,4 +734,32 @@ OptimizationResult IncrementalSmoother::convergeAll(const OptimizerParams& param
   return result;
 }
 
+std::size_t IncrementalSmoother::memoryBytes() const {
+  std::size_t bytes = vectorBytes(variables_) + mapBytes(variableIds_) + theta_.memoryBytes() +
+                      vectorBytes(thetaById_) + vectorBytes(delta_) + vectorBytes(slots_) +
+                      vectorBytes(pendingMarked_) + vectorBytes(pendingReplaced_) + vectorBytes(unsettledMixtures_) +
+                      vectorBytes(cliques_) + vectorBytes(freeCliques_) + vectorBytes(roots_) +
+                      vectorBytes(relinearizationCandidates_) + vectorBytes(isCandidate_) + estimate_.memoryBytes() +
+                      vectorBytes(staleEstimates_) + vectorBytes(isStale_) + vectorBytes(estimateSlots_);
+  for (const Variable& v : variables_) bytes += vectorBytes(v.factors);
+  for (const Slot& slot : slots_) {
+    bytes += vectorBytes(slot.variables);
+    if (slot.linearization) {
+      bytes += sizeof(FactorContribution) + denseBytes(slot.linearization->information) +
+               denseBytes(slot.linearization->vector) + vectorBytes(slot.linearization->offsets);
+    }
+  }
+  for (const Clique& clique : cliques_) {
+    bytes += vectorBytes(clique.frontals) + vectorBytes(clique.separator) + vectorBytes(clique.children);
+    if (clique.conditional) bytes += sizeof(CliqueConditional) + clique.conditional->memoryBytes();
+  }
+  // The scratch of update() (a fork starts with an empty one, so this counts what a used smoother holds).
+  bytes += vectorBytes(scratch_.localIndex) + vectorBytes(scratch_.scalarOffset) + vectorBytes(scratch_.slotStamp) +
+           vectorBytes(scratch_.positions) + vectorBytes(scratch_.cliqueSystem) +
+           nestedVectorBytes(scratch_.neighbours) + nestedVectorBytes(scratch_.later) +
+           nestedVectorBytes(scratch_.factorsOfClique) + vectorBytes(scratch_.solveBuffer) +
+           vectorBytes(scratch_.changedVariables) + vectorBytes(scratch_.linearizedMixtures);
+  return bytes;
+}
+
 }  // namespace semslam

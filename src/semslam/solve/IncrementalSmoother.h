@@ -105,6 +105,7 @@ class IncrementalSmoother final : public Smoother {
   JointMarginal jointMarginal(const std::vector<Key>& keys) const override;
   FactorGraph factors() const override;
   std::unique_ptr<Smoother> fork() const override;
+  std::size_t memoryBytes() const override;
 
   /// Gauss-Newton to convergence on the whole graph: the batch optimizer (Optimizer.h, same stopping rules) from
   /// the current estimate, then the tree rebuilt at its result: θ ← the optimum, every factor relinearized, the

@@ -26,6 +26,8 @@ class Marginals {
   Matrix marginalCovariance(Key key) const;
   /// Joint covariance of `keys`, in that order (a key may not repeat).
   JointMarginal jointMarginal(const std::vector<Key>& keys) const;
+  /// Heap bytes held: the linearized system and its Cholesky factor.
+  std::size_t memoryBytes() const { return system_.memoryBytes() + cholesky_.memoryBytes(); }
 
  private:
   NormalEquations system_;

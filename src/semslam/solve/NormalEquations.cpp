@@ -153,4 +153,17 @@ Values NormalEquations::retract(const Values& values, const Vector& delta) const
   return result;
 }
 
+std::size_t NormalEquations::memoryBytes() const {
+  std::size_t bytes = vectorBytes(keys_) + vectorBytes(offsets_) + vectorBytes(dims_) + graph_.memoryBytes() +
+                      nestedVectorBytes(factorVariables_) + nestedVectorBytes(factorBlockRows_) +
+                      vectorBytes(linearized_) + vectorBytes(diagonalPositions_) + denseBytes(gradient_);
+  for (const LinearizedFactor& f : linearized_) {
+    bytes += denseBytes(f.whitenedError) + vectorBytes(f.jacobians);
+    for (const Matrix& j : f.jacobians) bytes += denseBytes(j);
+  }
+  bytes += static_cast<std::size_t>(hessian_.nonZeros()) * (sizeof(double) + sizeof(int)) +
+           static_cast<std::size_t>(hessian_.outerSize() + 1) * sizeof(int);
+  return bytes;
+}
+
 }  // namespace semslam

@@ -41,6 +41,8 @@ class NormalEquations {
   const std::vector<int>& diagonalPositions() const { return diagonalPositions_; }
 
   int dimension() const { return dimension_; }
+  /// Heap bytes held: the system, the per-factor linearizations and index tables (not the shared factors).
+  std::size_t memoryBytes() const;
   const std::vector<Key>& keys() const { return keys_; }
   /// Column offset and dimension of a variable's block; throws std::out_of_range for an unknown key.
   int offset(Key key) const;

@@ -60,6 +60,12 @@ class Smoother {
 
   /// A copy that shares all factors with this one; updating either leaves the other unchanged.
   virtual std::unique_ptr<Smoother> fork() const = 0;
+
+  /// Heap bytes this smoother holds, counted from its containers' sizes (core/MemoryBytes.h): its estimate, its
+  /// index of the factors, and whatever it caches (linearizations, factorizations, a Bayes tree), counting what
+  /// it still shares with a fork as its own (an upper bound of what one more fork costs). The factors, shared by
+  /// every fork, are not counted. Deterministic; the hybrid belief's memory bound reads it.
+  virtual std::size_t memoryBytes() const = 0;
 };
 
 }  // namespace semslam

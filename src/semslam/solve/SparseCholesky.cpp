@@ -38,4 +38,6 @@ Matrix SparseCholesky::solve(const Matrix& b) const {
   return x;
 }
 
+std::size_t SparseCholesky::memoryBytes() const { return llt_.cholmod().memory_inuse; }
+
 }  // namespace semslam

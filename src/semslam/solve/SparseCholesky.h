@@ -26,13 +26,15 @@ class SparseCholesky {
   /// Numeric factorization; returns false if the matrix is not (numerically) positive definite.
   bool factorize(const SparseMatrix& upper);
   bool analyzed() const { return analyzed_; }
+  /// Bytes CHOLMOD holds for this factorization (its own count of what it allocated).
+  std::size_t memoryBytes() const;
 
   /// H⁻¹ b, and H⁻¹ B column by column (after a successful factorize).
   Vector solve(const Vector& b) const;
   Matrix solve(const Matrix& b) const;
 
  private:
-  Eigen::CholmodDecomposition<SparseMatrix, Eigen::Upper> llt_;
+  mutable Eigen::CholmodDecomposition<SparseMatrix, Eigen::Upper> llt_;  // mutable: cholmod() is not const
   bool analyzed_ = false;
 };
 

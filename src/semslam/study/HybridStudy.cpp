@@ -22,7 +22,8 @@
 namespace semslam {
 namespace {
 
-bool historyIsTrue(const AssociationHistory& history, const MeasurementLog& log) {
+bool historyIsTrue(const AssociationHistory& associations, const MeasurementLog& log) {
+  const std::vector<std::vector<int>> history = associations.steps();
   if (history.size() != log.steps.size()) return false;
   for (std::size_t k = 0; k < history.size(); ++k) {
     const auto& detections = log.steps[k].detections;
@@ -72,7 +73,7 @@ HybridStudyRow runOne(const HybridStudyOptions& options, const HybridStudyRun& j
   row.alpha = scenario.alpha;
   row.model = job.classifier ? "classifier" : "geometric";
   row.track = job.track;
-  const HybridMarginals& last = out.hybridSteps.back().marginals;
+  const HybridMarginals& last = out.hybridFinal;
   const SE2& truth = std::get<SE2>(*log.steps.back().truePose);
   const HypothesisMetrics metrics = evaluateHypotheses(last.components, log.steps.back().truePose);
   row.entropy = metrics.entropy;
@@ -89,18 +90,18 @@ HybridStudyRow runOne(const HybridStudyOptions& options, const HybridStudyRun& j
   row.finalNees = poseNees(std::get<SE2>(heaviest->pose), truth, heaviest->covariance);
   row.heaviestComponentCorrect = historyIsTrue(heaviest->associations, log);
   row.mixtureNees = mixtureNees(last.components, truth);
-  const int step = std::min<int>(options.disambiguationStep, static_cast<int>(out.hybridSteps.size()) - 1);
+  const int step = std::min<int>(options.disambiguationStep, static_cast<int>(out.hybridReports.size()) - 1);
   row.assocWeightAtStep = out.result.heaviestAssociationWeights[step];
   row.disambiguatedAtStep = row.assocWeightAtStep > 0.9;
   row.heaviestHistoryCorrect = historyIsTrue(last.association.front().associations, log);
   double tv = 0.0;
   int tvSteps = 0;
-  for (const HybridStepRecord& s : out.hybridSteps) {
-    row.gateLostMass = std::max(row.gateLostMass, s.report.weights.gateLostMass);
-    row.sampledCandidates += static_cast<long long>(s.report.weights.sampled);
-    row.samplingSeconds += s.report.weights.samplingSeconds;
-    if (s.report.weights.sampled > 1) {
-      tv += s.report.weights.analyticTotalVariation;
+  for (const HybridStepReport& report : out.hybridReports) {
+    row.gateLostMass = std::max(row.gateLostMass, report.weights.gateLostMass);
+    row.sampledCandidates += static_cast<long long>(report.weights.sampled);
+    row.samplingSeconds += report.weights.samplingSeconds;
+    if (report.weights.sampled > 1) {
+      tv += report.weights.analyticTotalVariation;
       ++tvSteps;
     }
   }
