@@ -25,6 +25,7 @@
 #include "semslam/io/SemanticSimulationTruth.h"
 #include "semslam/sim/Aliased2dLayout.h"
 #include "semslam/sim/Aliased2dSimulator.h"
+#include "semslam/sim/Aliased3dLift.h"
 
 namespace semslam::cli {
 
@@ -45,6 +46,8 @@ struct AliasedOptions {
   std::string writeScenario;
   bool quiet = false;
   bool overwrite = false;
+  bool lift3d = false;                 // sim/Aliased3dLift.h: the track in 3D, level
+  std::vector<double> objectHeights;   // ... with the objects at these heights (implies lift3d)
 };
 
 Aliased2dScenario scenarioOf(const AliasedOptions& options) {
@@ -79,10 +82,24 @@ void runAliased(const AliasedOptions& options) {
     if (fs::is_directory(options.out)) {
       throw InputError("--out " + options.out + ": is a folder; with one track --out names the log file");
     }
-    writeMeasurementLog(options.out, simulateAliased2dTrack(scenario, options.seed, 0, options.steps, 1));
-    std::printf("wrote 1 track of %d steps (scenario '%s', seed %llu) to %s\n", options.steps, scenario.name.c_str(),
-                static_cast<unsigned long long>(options.seed), options.out.c_str());
+    MeasurementLog log = simulateAliased2dTrack(scenario, options.seed, 0, options.steps, 1);
+    if (options.lift3d || !options.objectHeights.empty()) {
+      if (!options.objectHeights.empty() && options.objectHeights.size() != scenario.objects.size()) {
+        throw InputError("--object-heights: " + std::to_string(options.objectHeights.size()) +
+                         " heights for the scenario's " + std::to_string(scenario.objects.size()) + " objects");
+      }
+      Aliased3dLift lift;
+      lift.objectHeights = options.objectHeights;
+      log = liftAliasedLogTo3d(log, lift, options.seed, 0);
+    }
+    writeMeasurementLog(options.out, log);
+    std::printf("wrote 1 track of %d steps (scenario '%s', seed %llu%s) to %s\n", options.steps,
+                scenario.name.c_str(), static_cast<unsigned long long>(options.seed),
+                log.header.dimension == 3 ? ", in 3D" : "", options.out.c_str());
     return;
+  }
+  if (options.lift3d || !options.objectHeights.empty()) {
+    throw InputError("--lift-3d and --object-heights: one track at a time (--tracks 1)");
   }
   // One line rewritten in place on a terminal, a line every few seconds otherwise (core/ProgressBar.h).
   ProgressBar progress("simulate aliased2d tracks", options.tracks, options.quiet);
@@ -117,6 +134,12 @@ void addAliased(CLI::App& simulate) {
   command->add_option("--out", options->out, "the log (one track) or a folder of track_NNN.jsonl (several)");
   command->add_option("--write-scenario", options->writeScenario,
                       "write the scenario in effect (after --alpha) as JSON to this file");
+  command->add_flag("--lift-3d", options->lift3d,
+                    "the track in 3D: SE3 poses, range-bearing-elevation, level (sim/Aliased3dLift.h)");
+  command->add_option("--object-heights", options->objectHeights,
+                      "in 3D with the objects at these heights in metres, one per object (implies --lift-3d)")
+      ->delimiter(',')
+      ->check(CLI::Range(-1e4, 1e4));
   command->add_flag("--quiet", options->quiet, "no progress line");
   command->add_flag("--overwrite", options->overwrite,
                     "several tracks: replace an existing non-empty --out folder whole");

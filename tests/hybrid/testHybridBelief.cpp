@@ -17,33 +17,6 @@ using namespace semslam::test;
 
 namespace {
 
-/// Closed-form weights of associating detection z with each object of the linear toy (θ = 0 exactly known):
-/// z = l − t + v, so p(z | β = j) = N(z; l̄_j − t̄, Σ_t + Σ_l + R).
-std::vector<double> closedFormWeights(const MeasurementLog& log) {
-  const LogHeader& h = log.header;
-  const Vector2 z = log.steps[0].detections[0].geometry;
-  const Matrix2 R = log.steps[0].detections[0].covariance;
-  const Vector2 t = std::get<SE2>(h.initialPose->mean).translation();
-  const Matrix2 St = h.initialPose->covariance.topLeftCorner<2, 2>();
-  std::vector<double> logs;
-  for (const LandmarkPrior& l : h.landmarkPriors) logs.push_back(logGaussian(z, std::get<Point2>(l.mean) - t, St + l.covariance + R));
-  double sum = 0.0;
-  for (double& l : logs) sum += l = std::exp(l);
-  for (double& l : logs) l /= sum;
-  return logs;
-}
-
-HybridOptions unpruned(WeightMethod method, int samples = 1000) {
-  HybridOptions o;
-  o.useSemantics = false;
-  o.weights = method;
-  o.samples = samples;
-  o.pruneRatio = 0.0;
-  o.gateRatio = 0.0;
-  o.visibility = false;
-  return o;
-}
-
 /// The weight of the component associating detection 0 with object j.
 double weightOf(const HybridBelief& belief, int object) {
   for (const HybridComponent& c : belief.components()) {

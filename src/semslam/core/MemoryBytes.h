@@ -12,8 +12,6 @@
 #include <unordered_map>
 #include <vector>
 
-#include <Eigen/Core>
-
 namespace semslam {
 
 inline constexpr std::size_t kNodeOverhead = 48;
@@ -23,9 +21,10 @@ std::size_t vectorBytes(const std::vector<T>& v) {
   return v.capacity() * sizeof(T);
 }
 
-template <class Derived>
-std::size_t denseBytes(const Eigen::PlainObjectBase<Derived>& m) {
-  return static_cast<std::size_t>(m.size()) * sizeof(typename Derived::Scalar);
+/// A dense matrix or vector (Eigen's, or anything with size() and a Scalar type).
+template <class Dense>
+std::size_t denseBytes(const Dense& m) {
+  return static_cast<std::size_t>(m.size()) * sizeof(typename Dense::Scalar);
 }
 
 template <class K, class V, class C, class A>

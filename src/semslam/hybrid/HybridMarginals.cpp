@@ -1,6 +1,19 @@
 #include "semslam/hybrid/HybridMarginals.h"
 
+#include "semslam/models/ValueConversions.h"
+
 namespace semslam {
+namespace {
+
+Vector positionOf(const Pose& pose) {
+  return std::visit([](const auto& x) -> Vector { return x.translation(); }, pose);
+}
+
+Matrix rotationOf(const Pose& pose) {
+  return std::visit([](const auto& x) -> Matrix { return x.rotation().matrix(); }, pose);
+}
+
+}  // namespace
 
 HybridMarginals hybridMarginals(const HybridBelief& belief) {
   const HybridProblem& problem = belief.problem();
@@ -14,7 +27,7 @@ HybridMarginals hybridMarginals(const HybridBelief& belief) {
     h.associations = c.history;
     out.ancestors.push_back(c.ancestor);
     h.classes = c.classes;
-    h.pose = c.smoother->estimate<SE2>(pose);
+    h.pose = toPose(c.smoother->estimate().value(pose));
     h.covariance = c.smoother->marginalCovariance(pose);
     out.components.push_back(std::move(h));
   }
@@ -30,12 +43,15 @@ HybridMarginals hybridMarginals(const HybridBelief& belief) {
     }
   }
   // The mixture Σ w b[x_k] (A, eq. 6) by its first two moments.
-  for (const HypothesisComponent& h : out.components) out.mixtureMean += h.weight * std::get<SE2>(h.pose).translation();
+  const int d = problem.header().dimension;
+  out.mixtureMean = Vector::Zero(d);
+  out.mixtureCovariance = Matrix::Zero(d, d);
+  for (const HypothesisComponent& h : out.components) out.mixtureMean += h.weight * positionOf(h.pose);
   for (const HypothesisComponent& h : out.components) {
-    const SE2& x = std::get<SE2>(h.pose);
-    const Matrix2 R = x.rotation().matrix();
-    const Vector2 d = x.translation() - out.mixtureMean;
-    out.mixtureCovariance += h.weight * (R * h.covariance.topLeftCorner<2, 2>() * R.transpose() + d * d.transpose());
+    const Matrix R = rotationOf(h.pose);
+    const Vector offset = positionOf(h.pose) - out.mixtureMean;
+    out.mixtureCovariance +=
+        h.weight * (R * h.covariance.topLeftCorner(d, d) * R.transpose() + offset * offset.transpose());
   }
   return out;
 }

@@ -11,7 +11,8 @@
 //                      class prior, A sec. IV-D); empty without semantics;
 //   mixture            the mixture posterior over the current position (eq. 6) summarised by its first two
 //                      moments in the world frame: μ = Σ w_i μ_i, Σ = Σ w_i (R_i Σ_i,tt R_iᵀ + (μ_i − μ)(μ_i − μ)ᵀ),
-//                      Σ_i,tt the translation block of the component's tangent covariance and R_i its rotation;
+//                      Σ_i,tt the translation block of the component's tangent covariance and R_i its rotation
+//                      (2 or 3 entries: the log's dimension);
 // Paper A's metrics of these (entropy, det Σ, errors against the true pose) are eval/HypothesisMetrics.h's; the
 // estimator computes none of them.
 
@@ -29,8 +30,8 @@ struct HybridMarginals {
   std::vector<int> ancestors;
   std::vector<AssociationHypothesis> association;
   Matrix classes;  ///< N x M, empty without semantics
-  Vector2 mixtureMean = Vector2::Zero();
-  Matrix2 mixtureCovariance = Matrix2::Zero();
+  Vector mixtureMean;        ///< d = the log's dimension
+  Matrix mixtureCovariance;  ///< d x d
 };
 
 /// The marginals of `belief` at its current step.

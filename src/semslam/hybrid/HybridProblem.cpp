@@ -13,10 +13,10 @@ namespace semslam {
 namespace {
 
 const LogHeader& checked(const LogHeader& header) {
-  if (header.dimension != 2) throw InputError("hybrid belief: only 2D logs are supported");
+  if (header.dimension != 2 && header.dimension != 3) throw InputError("hybrid belief: the log must be 2D or 3D");
   if (!header.initialPose) throw InputError(
         "hybrid belief: the log has no initial pose prior, which holds the first pose (the hybrid belief's weights "
-        "need a proper prior): add \"initial_pose\": {\"mean\": [x, y, theta], \"covariance\": 3x3} to the "
+        "need a proper prior): add \"initial_pose\": {\"mean\", \"covariance\"} to the "
         "log's header line (docs/measurement-log.md)");
   if (header.landmarkPriors.empty()) {
     throw InputError("hybrid belief: the log has no landmark priors (paper A needs the known, uncertain map; "
@@ -28,7 +28,9 @@ const LogHeader& checked(const LogHeader& header) {
 }  // namespace
 
 HybridProblem::HybridProblem(const LogHeader& header, bool useSemantics)
-    : header_(checked(header)), factory_(header_), visibility_(VisibilityModel2::fromSpec(header_.sensor)) {
+    : header_(checked(header)), factory_(header_) {
+  if (header_.dimension == 2) visibility_ = VisibilityModel2::fromSpec(header_.sensor);
+  else visibility_ = VisibilityModel3::fromSpec(header_.sensor);
   if (!useSemantics || header_.semantic == SemanticKind::None) return;
   switch (header_.classifier.kind) {
     case ClassifierModelSpec::Kind::ViewpointGaussian:
@@ -64,22 +66,58 @@ std::vector<FactorPtr> HybridProblem::detectionFactors(Key pose, int object, con
   std::vector<FactorPtr> factors{factory_.detectionFactor(pose, objectKey(object), detection)};
   if (semantic_ == SemanticModelKind::Viewpoint) {
     if (!detection.classVector) throw InputError("hybrid belief: a detection has no class scores");
-    factors.push_back(std::make_shared<const ViewpointSemanticFactor<SE2>>(
-        pose, objectKey(object), *detection.classVector, classIndex, viewpointModel_,
-        std::get<SE2>(header_.sensor.bodyToSensor)));
+    if (header_.dimension == 2) {
+      factors.push_back(std::make_shared<const ViewpointSemanticFactor<SE2>>(
+          pose, objectKey(object), *detection.classVector, classIndex, viewpointModel_,
+          std::get<SE2>(header_.sensor.bodyToSensor)));
+    } else {
+      factors.push_back(std::make_shared<const ViewpointSemanticFactor<SE3>>(
+          pose, objectKey(object), *detection.classVector, classIndex, viewpointModel_,
+          std::get<SE3>(header_.sensor.bodyToSensor)));
+    }
   }
   return factors;
 }
 
 FactorPtr HybridProblem::gateFactor(Key pose, int object, const Detection& detection) const {
-  if (header_.sensor.kind != SensorKind::RangeBearing) return factory_.detectionFactor(pose, objectKey(object), detection);
-  const FactorPtr checked = factory_.detectionFactor(pose, objectKey(object), detection);  // validates the detection
-  (void)checked;
-  const Vector2 rb = detection.geometry;
-  const Matrix2 covariance = detection.covariance;
-  const SE2& mount = std::get<SE2>(header_.sensor.bodyToSensor);
-  if (header_.landmarksHavePose) return CartesianGateFactor<SE2>::fromRangeBearing(pose, objectKey(object), rb, covariance, mount);
-  return CartesianGateFactor<Point2>::fromRangeBearing(pose, objectKey(object), rb, covariance, mount);
+  FactorPtr factor = factory_.detectionFactor(pose, objectKey(object), detection);  // validates the detection
+  const Key l = objectKey(object);
+  const bool posed = header_.landmarksHavePose;
+  if (header_.sensor.kind == SensorKind::RangeBearing) {
+    const Vector2 rb = detection.geometry;
+    const Matrix2 covariance = detection.covariance;
+    const SE2& mount = std::get<SE2>(header_.sensor.bodyToSensor);
+    if (posed) return CartesianGateFactor<SE2>::fromRangeBearing(pose, l, rb, covariance, mount);
+    return CartesianGateFactor<Point2>::fromRangeBearing(pose, l, rb, covariance, mount);
+  }
+  if (header_.sensor.kind == SensorKind::RangeBearingElevation) {
+    const Vector3 rbe = detection.geometry;
+    const Matrix3 covariance = detection.covariance;
+    const SE3& mount = std::get<SE3>(header_.sensor.bodyToSensor);
+    if (posed) return CartesianGateFactor<SE3>::fromRangeBearingElevation(pose, l, rbe, covariance, mount);
+    return CartesianGateFactor<Point3>::fromRangeBearingElevation(pose, l, rbe, covariance, mount);
+  }
+  return factor;  // relative position or pose: linear in the positions already
+}
+
+bool HybridProblem::visible(const Value& robot, const Vector& position) const {
+  if (const auto* model = std::get_if<VisibilityModel2>(&visibility_)) {
+    return model->visible(std::get<SE2>(robot), Point2(position(0), position(1)));
+  }
+  return std::get<VisibilityModel3>(visibility_).visible(std::get<SE3>(robot),
+                                                         Point3(position(0), position(1), position(2)));
+}
+
+bool HybridProblem::associationFeasible(const Value& robot, const std::vector<Vector>& positions,
+                                        const std::vector<int>& beta) const {
+  if (const auto* model = std::get_if<VisibilityModel2>(&visibility_)) {
+    std::vector<Point2> points;
+    for (const Vector& p : positions) points.emplace_back(p(0), p(1));
+    return model->associationFeasible(std::get<SE2>(robot), points, beta);
+  }
+  std::vector<Point3> points;
+  for (const Vector& p : positions) points.emplace_back(p(0), p(1), p(2));
+  return std::get<VisibilityModel3>(visibility_).associationFeasible(std::get<SE3>(robot), points, beta);
 }
 
 double HybridProblem::semanticLogConstant(const Detection& detection, int classIndex) const {

@@ -15,9 +15,16 @@
 //   None, or useSemantics = false: nothing.
 // Class prior (eq. 3): uniform, P(c_j) = 1/M.
 //
-// Limits (InputError): 2D logs only; the header must have an initial pose prior and at least one landmark prior.
+// Dimension: 2D logs (SE2 poses; range-bearing, relative-position or relative-pose detections) and 3D logs (SE3
+// poses; range-bearing-elevation, relative-position or relative-pose detections). In 3D the viewpoint classifier's
+// angle is about the object's vertical axis (models/Viewpoint.h), as for paper A's mirror-symmetric car, and the
+// visibility model is VisibilityModel3 (a cone about the sensor's x axis). A 3D log of a level world (z, roll and
+// pitch fixed by tight priors and odometry) gives the 2D belief (tested).
+//
+// Limits (InputError): the header must have an initial pose prior and at least one landmark prior.
 
 #include <memory>
+#include <variant>
 #include <vector>
 
 #include "semslam/association/MeasurementFactory.h"
@@ -44,7 +51,12 @@ class HybridProblem {
   SemanticModelKind semantic() const { return semantic_; }
   /// Whether components carry a class realization (semantics in use).
   bool enumeratesClasses() const { return semantic_ != SemanticModelKind::None; }
-  const VisibilityModel2& visibility() const { return visibility_; }
+  /// Whether an object at `position` (world frame, 2 or 3 entries) is in the sensor's view from `robot` (A, eq. 14).
+  bool visible(const Value& robot, const Vector& position) const;
+  /// The object observation model's indicator (A, eq. 14-16): every object of `beta` (indices into `positions`)
+  /// visible from `robot`, none twice (VisibilityModel.h, associationFeasible).
+  bool associationFeasible(const Value& robot, const std::vector<Vector>& positions,
+                           const std::vector<int>& beta) const;
 
   static Key objectKey(int object);
 
@@ -65,7 +77,7 @@ class HybridProblem {
   MeasurementFactory factory_;
   SemanticModelKind semantic_ = SemanticModelKind::None;
   std::shared_ptr<const ViewpointClassifierModel> viewpointModel_;
-  VisibilityModel2 visibility_;
+  std::variant<VisibilityModel2, VisibilityModel3> visibility_;
 };
 
 }  // namespace semslam

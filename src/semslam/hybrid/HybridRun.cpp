@@ -4,6 +4,8 @@
 #include <chrono>
 #include <sstream>
 
+#include "semslam/models/ValueConversions.h"
+
 namespace semslam {
 
 HybridRunOutput runHybrid(const MeasurementLog& log, const HybridOptions& options, const HybridProgress& progress,
@@ -31,7 +33,7 @@ HybridRunOutput runHybrid(const MeasurementLog& log, const HybridOptions& option
     const Smoother& smoother = *best.smoother;
     for (int k = 0; k < steps; ++k) {
       const Key key = poseKey(static_cast<std::uint64_t>(k));
-      result.poses.push_back(smoother.estimate<SE2>(key));
+      result.poses.push_back(toPose(smoother.estimate().value(key)));
       result.poseCovariances.push_back(smoother.marginalCovariance(key));
     }
     for (const std::vector<int>& beta : best.history.steps()) {
@@ -43,12 +45,7 @@ HybridRunOutput runHybrid(const MeasurementLog& log, const HybridOptions& option
     for (int j = 0; j < problem.objects(); ++j) {
       EstimatedLandmark landmark;
       landmark.id = problem.objectId(j);
-      std::visit(
-          [&](const auto& v) {
-            using V = std::decay_t<decltype(v)>;
-            if constexpr (std::is_same_v<V, Point2> || std::is_same_v<V, SE2>) landmark.state = v;
-          },
-          smoother.estimate().value(HybridProblem::objectKey(j)));
+      landmark.state = toLandmarkState(smoother.estimate().value(HybridProblem::objectKey(j)));
       if (classMarginal.size() > 0) landmark.classProbabilities = classMarginal.row(j).transpose();
       result.landmarks.push_back(landmark);
     }

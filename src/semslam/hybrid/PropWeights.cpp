@@ -98,9 +98,8 @@ class SharedDraws {
     Vector terms(draws_.size());
     const Key objectKey = HybridProblem::objectKey(object);
     for (int s = 0; s < draws_.size(); ++s) {
-      const SE2 robot = std::get<SE2>(draws_.draw(pose_, s));
       const Vector p = MeasurementFactory::positionOf(draws_.draw(objectKey, s));
-      terms(s) = problem_.visibility().visible(robot, Point2(p(0), p(1))) ? 0.0 : kNegativeInfinity;
+      terms(s) = problem_.visible(draws_.draw(pose_, s), p) ? 0.0 : kNegativeInfinity;
     }
     return visibilityTerms_.emplace(object, std::move(terms)).first->second;
   }
@@ -338,7 +337,7 @@ std::vector<AssociationCandidate> propagateWeights(const HybridProblem& problem,
   };
   std::optional<SharedDraws> draws;
   std::size_t drawsParent = 0;
-  std::vector<Point2> visibilityPositions;  // the importance path's per-sample buffers
+  std::vector<Vector> visibilityPositions;  // the importance path's per-sample buffers
   std::vector<int> visibilityBeta;
   bool anyPositive = false;
   for (std::size_t index = 0; index < candidates.size(); ++index) {
@@ -362,11 +361,10 @@ std::vector<AssociationCandidate> propagateWeights(const HybridProblem& problem,
           visibilityPositions.clear();
           visibilityBeta.clear();
           for (std::size_t i = 1; i < keys.size(); ++i) {
-            const Vector p = MeasurementFactory::positionOf(sample.value(keys[i]));
-            visibilityPositions.emplace_back(p(0), p(1));
+            visibilityPositions.push_back(MeasurementFactory::positionOf(sample.value(keys[i])));
             visibilityBeta.push_back(static_cast<int>(i - 1));
           }
-          return problem.visibility().associationFeasible(sample.at<SE2>(keys[0]), visibilityPositions,
+          return problem.associationFeasible(sample.value(keys[0]), visibilityPositions,
                                                           visibilityBeta)
                      ? 1.0
                      : 0.0;

@@ -20,6 +20,14 @@ nlohmann::json matrix(const Matrix& m) {
   return rows;
 }
 
+/// [x, y, θ] (2D) or [x, y, z, qx, qy, qz, qw] (3D, TUM's order).
+nlohmann::json poseArray(const Pose& pose) {
+  if (const SE2* x = std::get_if<SE2>(&pose)) return {x->translation().x(), x->translation().y(), x->theta()};
+  const SE3& x = std::get<SE3>(pose);
+  const Eigen::Quaterniond q = x.rotation().toQuaternion();
+  return {x.translation().x(), x.translation().y(), x.translation().z(), q.x(), q.y(), q.z(), q.w()};
+}
+
 }  // namespace
 
 std::string hypothesesJsonLine(const HybridStepRecord& record, const HypothesisMetrics& h) {
@@ -29,12 +37,11 @@ std::string hypothesesJsonLine(const HybridStepRecord& record, const HypothesisM
   nlohmann::json components = nlohmann::json::array();
   for (std::size_t i = 0; i < m.components.size(); ++i) {
     const HypothesisComponent& c = m.components[i];
-    const SE2& x = std::get<SE2>(c.pose);
     components.push_back({{"weight", number(c.weight)},
                           {"ancestor", m.ancestors.at(i)},
                           {"beta", c.associations.empty() ? std::vector<int>() : c.associations.back()},
                           {"classes", c.classes},
-                          {"pose", {x.translation().x(), x.translation().y(), x.theta()}},
+                          {"pose", poseArray(c.pose)},
                           {"covariance", matrix(c.covariance)}});
   }
   line["components"] = components;
@@ -44,7 +51,8 @@ std::string hypothesesJsonLine(const HybridStepRecord& record, const HypothesisM
   }
   line["association_marginal"] = association;
   line["class_marginal"] = m.classes.size() > 0 ? matrix(m.classes) : nlohmann::json::array();
-  line["mixture"] = {{"mean", {m.mixtureMean.x(), m.mixtureMean.y()}}, {"covariance", matrix(m.mixtureCovariance)}};
+  line["mixture"] = {{"mean", std::vector<double>(m.mixtureMean.data(), m.mixtureMean.data() + m.mixtureMean.size())},
+                     {"covariance", matrix(m.mixtureCovariance)}};
   line["metrics"] = {{"entropy", number(h.entropy)},       {"det_cov", number(h.detCovariance)},
                      {"err_wmax", number(h.errorHeaviest)}, {"err_wavg", number(h.errorWeightedAverage)},
                      {"ess", number(h.ess)},               {"assoc_weight_max", number(h.heaviestAssociationWeight)},

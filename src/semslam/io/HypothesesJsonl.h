@@ -1,10 +1,11 @@
 #pragma once
 // HypothesesJsonl: hypotheses.jsonl, one JSON object per time step of a hybrid run (docs/hybrid-belief.md):
 //   {"step": k, "components": [{"weight", "ancestor", "beta": [ids per detection of step k], "classes": [per
-//     object, −1 collapsed], "pose": [x, y, θ], "covariance": [[3x3]]}, ...],
+//     object, −1 collapsed], "pose": [x, y, θ] (2D) or [x, y, z, qx, qy, qz, qw] (3D), "covariance": [[3x3 or
+//     6x6, right perturbation, translation first]]}, ...],
 //    "association_marginal": [{"component", "weight"}, ...] (eq. 8, heaviest first),
 //    "class_marginal": [[P(c_j = m)] per object] (eq. 7; [] without semantics),
-//    "mixture": {"mean": [x, y], "covariance": [[2x2]]} (eq. 6, moments of the position),
+//    "mixture": {"mean": [x, y(, z)], "covariance": [[2x2 or 3x3]]} (eq. 6, moments of the position),
 //    "metrics": {"entropy", "det_cov", "err_wmax", "err_wavg", "ess", "assoc_weight_max", "components",
 //                "histories"},
 //    "report": {"parents", "candidates", "gated", "sampled", "gate_lost_mass", "pruned_mass", "survivors",

@@ -31,6 +31,7 @@ enum class SimStream : std::uint32_t {
   Detection = 8,    // semantic: missed detections
   Clutter = 9,      // semantic: false detections
   Layout = 10,      // aliased2d: a generated object layout (track 0 of the layout seed)
+  Lift3d = 11,      // aliased 3D lift: the objects' map heights and the 3D geometric noise
 };
 
 /// The stream `stream` of track `track` for the user seed `seed`.

@@ -12,6 +12,7 @@
 #include "semslam/association/MarginalLikelihood.h"
 #include "semslam/factors/MaxMixtureFactor.h"
 #include "semslam/models/HypothesisComponent.h"
+#include "semslam/models/ValueConversions.h"
 #include "semslam/solve/HungarianAssignment.h"
 
 namespace semslam {
@@ -39,24 +40,6 @@ std::vector<double> normalizeLogWeights(const std::vector<double>& logWeights) {
 
 int argmax(const std::vector<double>& values) {
   return static_cast<int>(std::max_element(values.begin(), values.end()) - values.begin());
-}
-
-Pose toPose(const Value& value) {
-  if (const auto* se2 = std::get_if<SE2>(&value)) return *se2;
-  return std::get<SE3>(value);
-}
-
-LandmarkState toLandmarkState(const Value& value) {
-  return std::visit(
-      [](const auto& v) -> LandmarkState {
-        using V = std::decay_t<decltype(v)>;
-        if constexpr (std::is_same_v<V, SO2> || std::is_same_v<V, SO3>) {
-          throw std::logic_error("a landmark cannot be a rotation");
-        } else {
-          return v;
-        }
-      },
-      value);
 }
 
 /// Weight of a forbidden pair in the joint assignment: below the smallest allowed weight by more than the sum of
