@@ -17,8 +17,10 @@ import tempfile
 
 import plot_hybrid
 import results_association
+import results_commands
 import results_association_defaults
 import results_hybrid_mrclam
+import results_hybrid_scaling
 import results_kitti_tracking
 import results_max_mixtures
 import results_studies_mpi
@@ -275,23 +277,6 @@ def hybrid_section(semslam, data, scratch, python):
     return lines
 
 
-def peak_memory_run(command):
-    """Runs `command` as the only child of a fresh interpreter and returns (its stderr, its peak resident set in
-    MiB, its wall seconds): the peak of that interpreter's children is the command's own."""
-    probe = ("import resource, subprocess, sys, time\n"
-             "start = time.monotonic()\n"
-             "done = subprocess.run(sys.argv[1:], capture_output=True, text=True)\n"
-             "wall = time.monotonic() - start\n"
-             "sys.stdout.write(done.stderr)\n"
-             "print('PEAK', resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss, wall, done.returncode)\n")
-    output = run([sys.executable, "-c", probe] + command)
-    stderr, _, last = output.rstrip("\n").rpartition("\n")
-    _, peak_kib, wall, code = last.split()
-    if code != "0":
-        sys.exit(f"make_results.py: {' '.join(command)} failed:\n{stderr}")
-    return stderr, int(peak_kib) / 1024.0, float(wall)
-
-
 def bounded_memory_lines(semslam, data, scratch, litw):
     """The hybrid belief with its defaults on a log where whole-association branching would not fit in memory
     (docs/hybrid-belief.md, "Bounded memory")."""
@@ -303,7 +288,7 @@ def bounded_memory_lines(semslam, data, scratch, litw):
     out = os.path.join(scratch, "litw200-hybrid")
     command = [semslam, "run", "--method", "hybrid", "--in", log, "--out", out, "--no-covariances", "--quiet",
                "--overwrite"]
-    stderr, peak, wall = peak_memory_run(command)
+    stderr, peak, wall = results_commands.peak_memory_run(command)
     with open(os.path.join(out, "metrics.json")) as f:
         m = json.load(f)
     note = next((line for line in stderr.splitlines() if line.startswith("note:")), "no bound bound")
@@ -316,8 +301,8 @@ def bounded_memory_lines(semslam, data, scratch, litw):
             "said:", "", "```", note, "```", ""]
 
 
-SECTIONS = ["pose-graphs", "evo", "datasets", "hybrid", "hybrid-mrclam", "max-mixtures", "robustness",
-            "association", "association-defaults", "kitti-tracking", "studies-mpi"]
+SECTIONS = ["pose-graphs", "evo", "datasets", "hybrid", "hybrid-mrclam", "hybrid-scaling", "max-mixtures",
+            "robustness", "association", "association-defaults", "kitti-tracking", "studies-mpi"]
 
 
 def section_lines(name, semslam, data, scratch):
@@ -342,6 +327,8 @@ def section_lines(name, semslam, data, scratch):
     elif name == "kitti-tracking":
         body = results_kitti_tracking.kitti_tracking_section(semslam, data, scratch,
                                                              lambda command: shown(command, data), sys.executable)
+    elif name == "hybrid-scaling":
+        body = results_hybrid_scaling.hybrid_scaling_section(semslam, data, scratch, lambda command: shown(command, data))
     elif name == "hybrid-mrclam":
         body = results_hybrid_mrclam.hybrid_mrclam_section(semslam, data, scratch, lambda command: shown(command, data))
     elif name == "studies-mpi":

@@ -19,3 +19,20 @@ def read_metrics(folder):
     """The metrics.json of a `semslam run` folder."""
     with open(os.path.join(folder, "metrics.json")) as f:
         return json.load(f)
+
+
+def peak_memory_run(command):
+    """Runs `command` as the only child of a fresh interpreter and returns (its stderr, its peak resident set in
+    MiB, its wall seconds): the peak of that interpreter's children is the command's own."""
+    probe = ("import resource, subprocess, sys, time\n"
+             "start = time.monotonic()\n"
+             "done = subprocess.run(sys.argv[1:], capture_output=True, text=True)\n"
+             "wall = time.monotonic() - start\n"
+             "sys.stdout.write(done.stderr)\n"
+             "print('PEAK', resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss, wall, done.returncode)\n")
+    output = run_checked([sys.executable, "-c", probe] + command)
+    stderr, _, last = output.rstrip("\n").rpartition("\n")
+    _, peak_kib, wall, code = last.split()
+    if code != "0":
+        sys.exit(f"make_results.py: {' '.join(command)} failed:\n{stderr}")
+    return stderr, int(peak_kib) / 1024.0, float(wall)

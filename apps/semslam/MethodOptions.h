@@ -17,8 +17,8 @@ namespace semslam::cli {
 void addSemanticSlamOptions(CLI::App* command, SemanticSlamOptions& options);
 
 /// Paper A's hybrid belief: --samples, --weights, --importance-iterations, --prune-ratio, --gate-ratio, --branching,
-/// --joint-compatibility, --max-components, --max-candidates, --max-memory, --no-visibility. The seed is each command's own (a run's draws, or a
-/// study's tracks and draws).
+/// --joint-compatibility, --max-components, --max-candidates, --max-memory, --no-visibility. The seed is each
+/// command's own (a run's draws, or a study's tracks and draws).
 void addHybridOptions(CLI::App* command, HybridOptions& options);
 
 }  // namespace semslam::cli

@@ -1,8 +1,9 @@
 """python/plot_hybrid.py on a small seeded study of the CLI: the per-layout and pooled comparison, the NEES subsets
-and the Fig. 5 analog.
+and the Fig. 5 analog; python/hypotheses.py and the Fig. 4 analog on two runs of one aliased track.
 
 Usage: test_plot_hybrid.py SEMSLAM_BINARY
 """
+import csv
 import json
 import os
 import subprocess
@@ -10,7 +11,10 @@ import sys
 import tempfile
 import unittest
 
-SCRIPT = os.path.join(os.path.dirname(__file__), "..", "..", "python", "plot_hybrid.py")
+PYTHON = os.path.join(os.path.dirname(__file__), "..", "..", "python")
+SCRIPT = os.path.join(PYTHON, "plot_hybrid.py")
+sys.path.insert(0, PYTHON)
+import hypotheses  # noqa: E402
 SEMSLAM = sys.argv.pop(1) if len(sys.argv) > 1 else "semslam"
 
 
@@ -53,6 +57,53 @@ class PlotHybrid(unittest.TestCase):
         out = os.path.join(self.scratch.name, "fig5.png")
         subprocess.run([sys.executable, "-B", SCRIPT, "fig5", self.study, "--out", out], check=True,
                        capture_output=True)
+        self.assertGreater(os.path.getsize(out), 10000)
+
+
+class Hypotheses(unittest.TestCase):
+    """hypotheses.jsonl stores each history once (beta_k and an ancestor index); following the ancestors of the
+    heaviest final component gives the history the run folder's associations.csv lists."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.scratch = tempfile.TemporaryDirectory()
+        log = os.path.join(cls.scratch.name, "track.jsonl")
+        subprocess.run([SEMSLAM, "simulate", "aliased2d", "--steps", "8", "--seed", "2", "--out", log], check=True,
+                       capture_output=True)
+        cls.runs = {}
+        for method in ("hybrid", "hybrid-geometric"):
+            out = os.path.join(cls.scratch.name, method)
+            subprocess.run([SEMSLAM, "run", "--method", method, "--in", log, "--out", out, "--samples", "200",
+                            "--quiet"], check=True, capture_output=True)
+            cls.runs[method] = out
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.scratch.cleanup()
+
+    def test_the_heaviest_history_is_the_run_folders(self):
+        for out in self.runs.values():
+            lines = hypotheses.read(os.path.join(out, "hypotheses.jsonl"))
+            last = len(lines) - 1
+            weights = [c["weight"] for c in lines[last]["components"]]
+            heaviest = weights.index(max(weights))
+            history = hypotheses.history(lines, last, heaviest)
+            listed = {}
+            with open(os.path.join(out, "associations.csv")) as f:
+                for row in csv.DictReader(f):
+                    listed.setdefault(int(row["step"]), []).append(
+                        -1 if row["landmark"] in ("", "null") else int(row["landmark"]))
+            self.assertEqual(len(history), len(lines))
+            for k, beta in enumerate(history):
+                self.assertEqual(beta, listed.get(k, []), f"step {k}")
+            marginal = hypotheses.association_marginal(lines, last)
+            self.assertAlmostEqual(sum(w for _, w in marginal), 1.0, places=9)
+            self.assertIn(history, [h for h, _ in marginal])
+
+    def test_fig4_writes_a_figure(self):
+        out = os.path.join(self.scratch.name, "fig4.png")
+        subprocess.run([sys.executable, "-B", SCRIPT, "fig4", self.runs["hybrid"], self.runs["hybrid-geometric"],
+                        "--steps", "1,4,8", "--out", out], check=True, capture_output=True)
         self.assertGreater(os.path.getsize(out), 10000)
 
 

@@ -1,7 +1,7 @@
 #include "semslam/hybrid/HybridBelief.h"
 
-#include <chrono>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>

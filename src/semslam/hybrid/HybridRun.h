@@ -6,7 +6,8 @@
 //   poses, poseCovariances   the heaviest final component's smoothed poses and their marginal covariances;
 //   associations             its association history (log ids; std::nullopt for a dropped detection);
 //   landmarks                its object estimates, with the class marginal (eq. 7) where semantics are used;
-//   components               the final belief's components; heaviestAssociationWeights: max_β P(β | H_k) per step.
+//   components               the final belief's components; heaviestAssociationWeights: max_β P(β | H_k) per step;
+//   timeSeconds              the loop's wall time, each step's marginals included, the observer's time excluded.
 // method is "hybrid" (semantics) or "hybrid-geometric" (options.useSemantics = false).
 
 #include <functional>

@@ -80,7 +80,9 @@ void runHybridBelief(const MeasurementLog& log, const MethodOptions& options, co
   const HybridStepObserver observe = [&](const HybridStepRecord& record) {
     const int k = record.marginals.step;
     run.hybridStepMetrics.push_back(evaluateHypotheses(record.marginals.components, log.steps[k].truePose));
-    if (run.hypothesesJsonl) run.hypothesesJsonl->append(hypothesesJsonLine(record, run.hybridStepMetrics.back()) + "\n");
+    if (run.hypothesesJsonl) {
+      run.hypothesesJsonl->append(hypothesesJsonLine(record, run.hybridStepMetrics.back()) + "\n");
+    }
   };
   HybridRunOutput hybrid = runHybrid(log, hybridOptions, progress, observe);
   run.evaluation = evaluateRun(log, hybrid.result);
