@@ -185,11 +185,12 @@ TEST(HostileCli, ConvertRefusesMoreClassesThanALogMayHoldBeforeReading) {
 
 TEST(HostileCli, ConvertRefusesADatasetWhoseLogTheReaderWouldRefuse) {
   // The writer refused the log with std::invalid_argument after the conversion: exit 1. Now an input error naming
-  // the dataset, the step and the field.
+  // the dataset's file and line that made the refused part, the log's step and the field.
   const semslam::test::TempDir scratch;
   const std::string isam = scratch.write("g.isam", "EDGE2 0 1 1 0 0 1 0 0 1 0 1\nEDGE2 1 2 1e308 0 0 1 0 0 1 0 1\n");
   expectRefused(runSemslam("convert isam " + isam + " --out " + scratch.path("x.jsonl")),
-                isam + ": the log made from it would be refused: step 2: odometry.increment[0]: number 1e+308 is too large");
+                isam + ":2: the log made from it would be refused (log step 2): odometry.increment[0]: number 1e+308 is "
+                       "too large");
   const std::string fine = scratch.write("f.isam", "EDGE2 0 1 1 0 0 1 0 0 1 0 1\n");
   expectRefused(runSemslam("convert isam " + fine + " --initial-pose-sigma 1e-12,1,1 --out " + scratch.path("x.jsonl")),
                 "--initial-pose-sigma values must be in [1e-9, 1e9], got 1e-12");
