@@ -139,6 +139,41 @@ TEST(HostileCli, FiniteButHugeNumbersInALogExitTwoNamingTheLine) {
   }
 }
 
+// A log with a map prior (the hybrid belief needs one) whose first detection has the covariance `covariance`.
+std::string logWithFirstDetectionCovariance(const std::string& covariance) {
+  return R"({"format":"semslam-log","version":1,"dimension":2,"classes":2,"semantic":"probabilities",)"
+         R"("classifier":{"kind":"categorical","misclassification":0.1},"sensor":{"kind":"range-bearing"},)"
+         R"("initial_pose":{"mean":[0,0,0],"covariance":[[1e-4,0,0],[0,1e-4,0],[0,0,1e-6]]},)"
+         R"("landmark_priors":[{"id":7,"mean":[4.0,2.0],"covariance":[[0.25,0.0],[0.0,0.25]]}],)"
+         R"("landmark_truth":[{"id":7,"class":1,"position":[4.1,1.9]}]})"
+         "\n"
+         R"({"time":0,"detections":[{"geometry":[4.47,0.46],"covariance":)" + covariance +
+         R"(,"probabilities":[0.2,0.8],"truth":7}]})"
+         "\n"
+         R"({"time":0.5,"odometry":{"increment":[0.5,0.0,0.05],"covariance":[[0.0025,0,0],[0,0.0025,0],[0,0,0.0004]]},)"
+         R"("detections":[{"geometry":[3.89,0.46],"covariance":[[0.01,0],[0,0.0025]],"probabilities":[0.1,0.9],)"
+         R"("truth":7}]})"
+         "\n";
+}
+
+TEST(HostileCli, ABadlyConditionedCovarianceIsRefusedAtItsLine) {
+  // diag(1e-18, 1e18): each variance within the log's limits and positive definite to Cholesky, yet `run` stopped
+  // without a line: the hybrid belief with "covariance is not positive definite" (a rotated copy of it), paper B's
+  // methods with "the system cannot be solved". Now an input error at the line, exit 2, for every method.
+  const semslam::test::TempDir scratch;
+  const std::string good = scratch.write("good.jsonl", logWithFirstDetectionCovariance("[[0.01,0],[0,0.0025]]"));
+  const std::string bad = scratch.write("bad.jsonl", logWithFirstDetectionCovariance("[[1e-18,0],[0,1e18]]"));
+  for (const char* method : {"known", "mm-nh", "hybrid"}) {
+    const std::string out = scratch.path(std::string("r-") + method);
+    EXPECT_EQ(runSemslam("run --quiet --method " + std::string(method) + " --in " + good + " --out " + out).exitCode, 0)
+        << method;
+    const std::string refused = scratch.path(std::string("x-") + method);
+    expectRefused(runSemslam("run --quiet --method " + std::string(method) + " --in " + bad + " --out " + refused),
+                  bad + ":2: detections[0].covariance: badly conditioned: eigenvalues from 1e-18 to 1e+18");
+    EXPECT_FALSE(fs::exists(refused));
+  }
+}
+
 TEST(HostileCli, ConvertRefusesMoreClassesThanALogMayHoldBeforeReading) {
   // --classes 100000 allocated a 10^5 x 10^5 confusion matrix before any data: std::bad_alloc, exit 1.
   const semslam::test::TempDir scratch;
@@ -150,11 +185,12 @@ TEST(HostileCli, ConvertRefusesMoreClassesThanALogMayHoldBeforeReading) {
 
 TEST(HostileCli, ConvertRefusesADatasetWhoseLogTheReaderWouldRefuse) {
   // The writer refused the log with std::invalid_argument after the conversion: exit 1. Now an input error naming
-  // the dataset, the step and the field.
+  // the dataset's file and line that made the refused part, the log's step and the field.
   const semslam::test::TempDir scratch;
   const std::string isam = scratch.write("g.isam", "EDGE2 0 1 1 0 0 1 0 0 1 0 1\nEDGE2 1 2 1e308 0 0 1 0 0 1 0 1\n");
   expectRefused(runSemslam("convert isam " + isam + " --out " + scratch.path("x.jsonl")),
-                isam + ": the log made from it would be refused: step 2: odometry.increment[0]: number 1e+308 is too large");
+                isam + ":2: the log made from it would be refused (log step 2): odometry.increment[0]: number 1e+308 is "
+                       "too large");
   const std::string fine = scratch.write("f.isam", "EDGE2 0 1 1 0 0 1 0 0 1 0 1\n");
   expectRefused(runSemslam("convert isam " + fine + " --initial-pose-sigma 1e-12,1,1 --out " + scratch.path("x.jsonl")),
                 "--initial-pose-sigma values must be in [1e-9, 1e9], got 1e-12");

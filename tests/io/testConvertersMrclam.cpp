@@ -218,3 +218,36 @@ TEST(MrclamConverter, RejectsAnUnknownRobot) {
   options.robot = 6;
   EXPECT_THROW(convertMrclam(folder.string(), options), InputError);
 }
+
+// Numbers a log may not hold are refused at the dataset row that made them (they were reported as "step 2" of the
+// log, or at the folder: issue 16).
+TEST(MrclamConverter, NumbersALogMayNotHoldAreRefusedAtTheirRow) {
+  TempDir dir;
+  const std::string folder = dir.path("");
+  const auto writeFolder = [&](const std::map<std::string, std::string>& edits) {
+    std::map<std::string, std::string> files = {
+        {"Barcodes.dat", "# subject barcode\n1 5\n6 27\n7 36\n"},
+        {"Landmark_Groundtruth.dat", "# subject x y x_sd y_sd\n6 1.0 2.0 0.0001 0.0001\n7 3.0 -1.0 0.0001 0.0001\n"},
+        {"Robot1_Odometry.dat", "# t v omega\n100.00 0.1 0.0\n100.50 0.1 0.1\n101.00 0.1 0.1\n"},
+        {"Robot1_Measurement.dat", "# t barcode range bearing\n100.50 27 2.2 1.1\n100.75 36 3.1 -0.3\n"},
+        {"Robot1_Groundtruth.dat", "# t x y theta\n100.00 0 0 0\n100.50 0.05 0 0.05\n101.00 0.1 0 0.1\n"}};
+    for (const auto& [name, text] : edits) files[name] = text;
+    for (const auto& [name, text] : files) dir.write(name, text);
+  };
+  writeFolder({});
+  EXPECT_EQ(convertMrclam(folder, ConvertOptions{}).steps.size(), 4u);  // stamps 100, 100.5, 100.75, 101
+
+  writeFolder({{"Robot1_Measurement.dat", "# t barcode range bearing\n100.50 27 2.2 1.1\n100.75 36 1e-300 -0.3\n"}});
+  EXPECT_INPUT_ERROR(convertMrclam(folder, ConvertOptions{}), dir.path("Robot1_Measurement.dat"), 3,
+                     "the range must be at least");
+  writeFolder({{"Landmark_Groundtruth.dat", "# subject x y x_sd y_sd\n6 1.0 2.0 0.0001 0.0001\n7 2e7 -1.0 0.0001 0.0001\n"}});
+  EXPECT_INPUT_ERROR(convertMrclam(folder, ConvertOptions{}), dir.path("Landmark_Groundtruth.dat"), 3,
+                     "landmark_truth[1].position[0]");
+  // The command of line 3 (t = 100.5) drives the step at 100.75.
+  writeFolder({{"Robot1_Odometry.dat", "# t v omega\n100.00 0.1 0.0\n100.50 1e300 0.1\n101.00 0.1 0.1\n"}});
+  EXPECT_INPUT_ERROR(convertMrclam(folder, ConvertOptions{}), dir.path("Robot1_Odometry.dat"), 3,
+                     "odometry.increment[0]");
+  // The step at 100.75 is interpolated towards the sample of line 4.
+  writeFolder({{"Robot1_Groundtruth.dat", "# t x y theta\n100.00 0 0 0\n100.50 0.05 0 0.05\n101.00 2.1e7 0 0.1\n"}});
+  EXPECT_INPUT_ERROR(convertMrclam(folder, ConvertOptions{}), dir.path("Robot1_Groundtruth.dat"), 4, "true_pose[0]");
+}

@@ -4,8 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <set>
+#include <sstream>
+#include <vector>
 
+#include "../../fuzz/ConverterReaders.h"
 #include "io/ConverterTesting.h"
 #include "semslam/eval/MeasurementResiduals.h"
 #include "semslam/io/convert/StarryNightConverter.h"
@@ -123,4 +127,63 @@ TEST(StarryNightConverter, SameSeedSameLogAndKeyframes) {
   const std::string a = test::writeAndReadBack(keyframes, dir, "a.jsonl");
   const std::string b = test::writeAndReadBack(convertStarryNight(folder.string(), options), dir, "b.jsonl");
   EXPECT_TRUE(a == b) << "two runs with the same seed differ";
+}
+
+namespace {
+
+// Replaces line `number` (1-based) of the text file `path` with `text`, or removes it when `text` is empty.
+void replaceLine(const std::string& path, std::size_t number, const std::string& text) {
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  in.close();
+  ASSERT_LE(number, lines.size()) << path;
+  if (text.empty()) {
+    lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(number - 1));
+  } else {
+    lines[number - 1] = text;
+  }
+  std::ofstream out(path);
+  for (const std::string& line : lines) out << line << '\n';
+}
+
+}  // namespace
+
+// Numbers a log may not hold are refused at the dataset row that made them (they were reported as "step 3" of the
+// log, or at the folder: issue 16). On the hand-checked slice of the fuzz seeds (fuzz/corpus/convert-starry-night/
+// valid_slice: a comment line, then 20 rows per file); each case edits one line of a fresh copy.
+TEST(StarryNightConverter, NumbersALogMayNotHoldAreRefusedAtTheirRow) {
+  const std::string seed = std::string(SEMSLAM_SOURCE_DIR) + "/fuzz/corpus/convert-starry-night/valid_slice";
+  const auto& files = semslam::fuzz::converterFiles("utias-starry-night");
+  {
+    const semslam::fuzz::PackedFolder folder(seed, files);
+    EXPECT_EQ(convertStarryNight(folder.path(), ConvertOptions{}).steps.size(), 20u);
+  }
+  struct Case {
+    std::string file;
+    std::size_t line;
+    std::string text;  // empty: the line is removed
+    std::string problem;
+    std::size_t reportedLine;  // where the error is expected, in `reportedFile`
+    std::string reportedFile;
+  };
+  const std::vector<Case> cases = {
+      {"calibration.txt", 6, "b 0", "entry 'b' must be > 0", 6, "calibration.txt"},
+      {"rbe_measurements_vehicle_frame.txt", 3,
+       "1 0.047002360 4 1e-300 3.11957664 0.445157335 -2.76303125 0.0608407744 1.31855151",
+       "the range must be at least", 3, "rbe_measurements_vehicle_frame.txt"},
+      {"groundtruth.txt", 3, "0.047002360 2.1450464009 -2.26777054658 0.0398374288694 2e7 0.418349508765 1.35361633864",
+       "true_pose[0]", 3, "groundtruth.txt"},
+      {"imu_velocities.txt", 3,
+       "0.047002360 -0.00474144234 -0.00177536236 0.00622931389 1e300 0.000801607145 -0.000622227962",
+       "odometry.increment", 3, "imu_velocities.txt"},
+      // The last ground-truth row removed: the velocity row without one.
+      {"groundtruth.txt", 21, "", "no ground-truth row for this stamp", 21, "imu_velocities.txt"},
+  };
+  for (const Case& c : cases) {
+    const semslam::fuzz::PackedFolder folder(seed, files);
+    replaceLine(folder.path(c.file), c.line, c.text);
+    EXPECT_INPUT_ERROR(convertStarryNight(folder.path(), ConvertOptions{}), folder.path(c.reportedFile),
+                       c.reportedLine, c.problem);
+  }
 }

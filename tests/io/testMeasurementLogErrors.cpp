@@ -241,6 +241,17 @@ TEST(MeasurementLogErrors, Steps) {
        "detections[0].covariance[1][1]: variance number 1e+308 is outside"},
       {"true_pose_huge", [](Json&, auto& s) { s[0]["true_pose"][1] = 1e154; }, 2,
        "true_pose[1]: number 1e+154 is too large"},
+      // Positive definite to Cholesky, but not through the rotations and sums the models take of it: the hybrid
+      // belief stopped with "covariance is not positive definite" at no line (issue 16).
+      {"covariance_badly_conditioned",
+       [](Json&, auto& s) {
+         s[1]["odometry"]["covariance"][0][0] = 1e-18;
+         s[1]["odometry"]["covariance"][1][1] = 1e18;
+       },
+       3, "odometry.covariance: badly conditioned: eigenvalues from 1e-18 to 1e+18, a ratio above 1e12"},
+      {"detection_nearly_singular",
+       [](Json&, auto& s) { s[1]["detections"][0]["covariance"] = {{1.0, 1.0 - 1e-15}, {1.0 - 1e-15, 1.0}}; }, 3,
+       "detections[0].covariance: badly conditioned"},
       {"covariance_not_symmetric", [](Json&, auto& s) { s[1]["odometry"]["covariance"][0][2] = 0.0005; }, 3,
        "odometry.covariance: not symmetric: entry (0, 2) is 0.00050000000000000001 but (2, 0) is 0"},
       {"covariance_wrong_size", [](Json&, auto& s) { s[1]["odometry"]["covariance"] = {{1, 0}, {0, 1}}; }, 3,

@@ -1,6 +1,7 @@
 #include "semslam/io/JsonField.h"
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -251,6 +252,17 @@ Matrix JsonField::covariance(int n, std::string_view what) const {
       }
       return d;
     }() + ")");
+  }
+  // Positive definite here, and through every rotation and sum the models take of it (InputMagnitudes.h).
+  const Eigen::SelfAdjointEigenSolver<Matrix> eigen(symmetric, Eigen::EigenvaluesOnly);
+  const double smallest = eigen.eigenvalues().minCoeff(), largest = eigen.eigenvalues().maxCoeff();
+  if (!(smallest * kMaxConditionNumber >= largest)) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "badly conditioned: eigenvalues from %.6g to %.6g, a ratio above %s (standard deviations along "
+                  "its axes must be within a factor 1e6 of each other; docs/measurement-log.md)",
+                  smallest, largest, magnitudeText(kMaxConditionNumber).c_str());
+    fail(text);
   }
   return symmetric;
 }

@@ -136,26 +136,4 @@ void writeMeasurementLog(const std::string& path, const MeasurementLog& log) {
   });
 }
 
-void checkMeasurementLog(const MeasurementLog& log, const std::string& source) {
-  const std::string prefix = "the log made from it would be refused: ";
-  if (log.steps.empty()) throw InputError(source, 0, prefix + "no time steps (a log has at least one)");
-  JsonLocation location{source, 1};
-  LogHeader validated;
-  try {
-    validated = jsonio::headerFromJson(JsonField(jsonio::headerToJson(log.header), location));
-  } catch (const InputError& error) {
-    throw InputError(source, 0, prefix + "header: " + error.problem());
-  }
-  jsonio::StepParser parser(validated);
-  for (std::size_t k = 0; k < log.steps.size(); ++k) {
-    location.line = k + 2;
-    const Json step = jsonio::stepToJson(log.steps[k], log.header.semantic);
-    try {
-      parser.parse(JsonField(step, location));
-    } catch (const InputError& error) {
-      throw InputError(source, 0, prefix + "step " + std::to_string(k) + ": " + error.problem());
-    }
-  }
-}
-
 }  // namespace semslam

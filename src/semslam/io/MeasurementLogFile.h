@@ -51,11 +51,6 @@ MeasurementLog readMeasurementLog(const std::string& path);
 /// positive definite"), std::runtime_error when the file cannot be written.
 void writeMeasurementLog(const std::string& path, const MeasurementLog& log);
 
-/// Validates `log` record by record with the reader's own parsers, as writeMeasurementLog does before it writes.
-/// Throws InputError(source, 0, "the log made from it would be refused: step 12: <problem>") (or "header: ..."):
-/// for a log made from `source` (a dataset a converter read), whose input caused the problem.
-void checkMeasurementLog(const MeasurementLog& log, const std::string& source);
-
 /// Reads a log one time step at a time, validating as readMeasurementLog does, for logs too long to hold.
 class MeasurementLogReader {
  public:

@@ -5,12 +5,36 @@
 #include <filesystem>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "semslam/core/InputError.h"
 #include "semslam/io/convert/ClassLabels.h"
+#include "semslam/io/convert/ConvertedLogCheck.h"
 #include "semslam/io/convert/Keyframing.h"
 
 namespace semslam {
+
+namespace {
+
+/// The rows of the keyframes `chosen` (KeyframeSummary::chosen) of the steps `raw`: each keyframe keeps the rows of
+/// its chosen step, its odometry the range of rows of every increment composed into it (when one file holds them).
+std::vector<StepSources> keyframeSources(const std::vector<StepSources>& raw, const std::vector<std::size_t>& chosen) {
+  std::vector<StepSources> kept;
+  kept.reserve(chosen.size());
+  for (std::size_t i = 0; i < chosen.size(); ++i) {
+    StepSources sources = raw[chosen[i]];
+    if (i > 0 && chosen[i - 1] + 1 != chosen[i]) {
+      const SourceLine& first = raw[chosen[i - 1] + 1].odometry;
+      if (first.file == sources.odometry.file) {
+        sources.odometry.firstLine = first.firstLine != 0 ? first.firstLine : first.line;
+      }
+    }
+    kept.push_back(std::move(sources));
+  }
+  return kept;
+}
+
+}  // namespace
 
 std::string datasetFile(const std::string& folder, const std::string& name) {
   if (!std::filesystem::is_directory(folder)) {
@@ -45,7 +69,7 @@ int integerField(const std::string& path, const NumericRow& row, std::size_t col
 
 std::set<int> readLandmarkTruthTable(const std::string& path, int dimension, std::size_t columns,
                                     const std::string& names, const std::string& idName,
-                                    std::vector<LandmarkTruth>& truth) {
+                                    std::vector<LandmarkTruth>& truth, std::vector<SourceLine>& rows) {
   std::set<int> ids;
   for (const NumericRow& row : readDatasetTable(path, columns, names)) {
     LandmarkTruth landmark;
@@ -59,6 +83,7 @@ std::set<int> readLandmarkTruthTable(const std::string& path, int dimension, std
       throw InputError(path, row.line, idName + " " + std::to_string(landmark.id) + " appears twice");
     }
     truth.push_back(landmark);
+    rows.push_back(SourceLine{path, row.line, 0});
   }
   return ids;
 }
@@ -78,10 +103,14 @@ Matrix diagonalCovariance(const std::vector<double>& values) {
   return covariance;
 }
 
-MeasurementLog finishConversion(MeasurementLog raw, const ConvertOptions& options, ConversionStats* stats) {
+MeasurementLog finishConversion(MeasurementLog raw, LogSources sources, const ConvertOptions& options,
+                                ConversionStats* stats) {
   const int dimension = raw.header.dimension;
   validateConvertOptions(options, dimension);
-  if (raw.steps.empty()) throw InputError("the dataset has no time steps");
+  if (sources.steps.size() != raw.steps.size()) {
+    throw std::invalid_argument("finishConversion: the sources are not parallel to the steps");
+  }
+  if (raw.steps.empty()) throw InputError(sources.dataset, 0, "the dataset has no time steps");
   ConversionStats counts;
   counts.datasetSteps = raw.steps.size();
   for (const TimeStep& step : raw.steps) counts.datasetDetections += step.detections.size();
@@ -91,6 +120,7 @@ MeasurementLog finishConversion(MeasurementLog raw, const ConvertOptions& option
   if (options.keyframePeriod > 0.0) {
     KeyframeSummary summary;
     log.steps = selectKeyframes(raw.steps, options.keyframePeriod, &summary);
+    sources.steps = keyframeSources(sources.steps, summary.chosen);
     counts.stepsDroppedByKeyframing = summary.droppedSteps;
     counts.detectionsDroppedByKeyframing = summary.droppedDetections;
   } else {
@@ -99,6 +129,7 @@ MeasurementLog finishConversion(MeasurementLog raw, const ConvertOptions& option
   const std::size_t before = log.steps.size();
   counts.detectionsDroppedByMaxSteps = keepFirstSteps(log.steps, options.maxSteps);
   counts.stepsDroppedByMaxSteps = before - log.steps.size();
+  sources.steps.resize(log.steps.size());
 
   if (log.header.semantic == SemanticKind::None) {
     assignClassLabels(log, options.classes, options.misclassification, options.seed, options.clutterLabels);
@@ -168,6 +199,7 @@ MeasurementLog finishConversion(MeasurementLog raw, const ConvertOptions& option
   if (counts.unknownTruth > 0) source << ", " << counts.unknownTruth << " unknown";
   source << ")";
   log.header.source = source.str();
+  checkConvertedLog(log, sources);
   if (stats != nullptr) *stats = counts;
   return log;
 }

@@ -1,5 +1,6 @@
 #include "semslam/io/convert/ConvertOptions.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -57,6 +58,13 @@ void validateConvertOptions(const ConvertOptions& options, int dimension) {
       if (!std::isfinite(sigma) || sigma < 1e-9 || sigma > 1e9) {
         throw InputError("--initial-pose-sigma values must be in [1e-9, 1e9], got " + number(sigma));
       }
+    }
+    // ... and its condition number at most 1e12 (io/InputMagnitudes.h).
+    const auto [smallest, largest] =
+        std::minmax_element(options.initialPoseSigmas.begin(), options.initialPoseSigmas.end());
+    if (*largest > 1e6 * *smallest) {
+      throw InputError("--initial-pose-sigma values must be within a factor 1e6 of each other, got " +
+                       number(*smallest) + " and " + number(*largest));
     }
   }
 }

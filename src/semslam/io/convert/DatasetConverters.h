@@ -24,7 +24,8 @@ namespace semslam {
 const std::vector<std::string>& datasetKinds();
 
 /// Converts the dataset at `path` with the converter `kind`; throws InputError for an unknown kind, and for a log
-/// the measurement-log reader would refuse (checkMeasurementLog: numbers beyond its limits).
+/// the measurement-log reader would refuse (numbers beyond its limits), at the dataset file and line that made the
+/// refused part (io/convert/ConvertedLogCheck.h).
 MeasurementLog convertDataset(const std::string& kind, const std::string& path, const ConvertOptions& options,
                               ConversionStats* stats = nullptr);
 

@@ -42,14 +42,18 @@ int idField(const LineReader& reader, std::size_t i) {
 MeasurementLog convertIsam(const std::string& path, const ConvertOptions& options, ConversionStats* stats) {
   validateConvertOptions(options, 2);
   MeasurementLog raw;
+  LogSources sources;
+  sources.dataset = path;
   LogHeader& header = raw.header;
   header.dimension = 2;
   header.sensor.kind = SensorKind::RelativePosition;
   header.sensor.bodyToSensor = SE2();
 
   LineReader reader(path);
-  raw.steps.emplace_back();  // pose 0
+  raw.steps.emplace_back();  // pose 0, which no line makes
   raw.steps.front().time = 0.0;
+  sources.steps.emplace_back();
+  sources.steps.front().step = SourceLine{path, 0, 0};
   while (reader.next()) {
     const std::string_view tag = reader.tag();
     if (tag == "EDGE2" || tag == "ODOMETRY") {
@@ -69,6 +73,9 @@ MeasurementLog convertIsam(const std::string& path, const ConvertOptions& option
       odometry.covariance = covarianceFromSqrtInformation(reader, reader.numbers(6, 6), 3);
       step.odometry = std::move(odometry);
       raw.steps.push_back(std::move(step));
+      StepSources rows;
+      rows.step = rows.odometry = SourceLine{path, reader.lineNumber(), 0};
+      sources.steps.push_back(std::move(rows));
     } else if (tag == "LANDMARK") {
       reader.requireValueCount(kLandmarkFields);
       const int i = idField(reader, 1), l = idField(reader, 2);
@@ -81,6 +88,7 @@ MeasurementLog convertIsam(const std::string& path, const ConvertOptions& option
       detection.covariance = covarianceFromSqrtInformation(reader, reader.numbers(5, 3), 2);
       detection.truthId = l;
       raw.steps[static_cast<std::size_t>(i)].detections.push_back(std::move(detection));
+      sources.steps[static_cast<std::size_t>(i)].detections.push_back(SourceLine{path, reader.lineNumber(), 0});
     } else {
       reader.fail("unsupported record type " + inputExcerpt(tag) +
                   " (the iSAM landmark converter reads EDGE2, ODOMETRY and LANDMARK)");
@@ -96,25 +104,35 @@ MeasurementLog convertIsam(const std::string& path, const ConvertOptions& option
   if (std::filesystem::exists(posesPath)) {
     havePoses = true;
     const std::vector<NumericRow> rows = readDatasetTable(posesPath, 4, "pose_id x y theta");
-    if (rows.size() != raw.steps.size()) {
-      throw InputError(
-          posesPath, 0,
-          "has " + std::to_string(rows.size()) + " poses, the iSAM file " + std::to_string(raw.steps.size()));
+    // The first pose the other file lacks, at its line (no data rows at all is refused by readDatasetTable).
+    if (rows.size() < raw.steps.size()) {
+      throw InputError(path, sources.steps[rows.size()].step.line,
+                       "pose " + std::to_string(rows.size()) + " has no row in " + posesPath + " (which has " +
+                           std::to_string(rows.size()) + " poses, the iSAM file " +
+                           std::to_string(raw.steps.size()) + ")");
+    }
+    if (rows.size() > raw.steps.size()) {
+      throw InputError(posesPath, rows[raw.steps.size()].line,
+                       "pose " + std::to_string(raw.steps.size()) + " is not in the iSAM file (which has " +
+                           std::to_string(raw.steps.size()) + " poses, this file " + std::to_string(rows.size()) +
+                           ")");
     }
     for (std::size_t k = 0; k < rows.size(); ++k) {
       integerField(posesPath, rows[k], 0, "pose id", static_cast<int>(k), static_cast<int>(k));
       raw.steps[k].truePose = SE2(rows[k].values[1], rows[k].values[2], rows[k].values[3]);
+      sources.steps[k].truePose = SourceLine{posesPath, rows[k].line, 0};
     }
   }
   if (std::filesystem::exists(landmarksPath)) {
     haveLandmarks = true;
     const std::set<int> ids = readLandmarkTruthTable(landmarksPath, 2, 4, "landmark_id x y n_observations",
-                                                     "landmark id", header.landmarkTruth);
-    for (const TimeStep& step : raw.steps) {
-      for (const Detection& detection : step.detections) {
-        if (ids.count(*detection.truthId) == 0) {
-          throw InputError(
-              path, 0, "landmark " + std::to_string(*detection.truthId) + " is observed but not in " + landmarksPath);
+                                                     "landmark id", header.landmarkTruth, sources.landmarks);
+    for (std::size_t k = 0; k < raw.steps.size(); ++k) {
+      for (std::size_t j = 0; j < raw.steps[k].detections.size(); ++j) {
+        const int id = *raw.steps[k].detections[j].truthId;
+        if (ids.count(id) == 0) {
+          throw InputError(path, sources.steps[k].detections[j].line,
+                           "landmark " + std::to_string(id) + " is observed but not in " + landmarksPath);
         }
       }
     }
@@ -126,7 +144,7 @@ MeasurementLog convertIsam(const std::string& path, const ConvertOptions& option
          << "information; true poses " << (havePoses ? "from " + posesPath : std::string("absent"))
          << ", landmark truth " << (haveLandmarks ? "from " + landmarksPath : std::string("absent"));
   header.source = source.str();
-  return finishConversion(std::move(raw), options, stats);
+  return finishConversion(std::move(raw), std::move(sources), options, stats);
 }
 
 }  // namespace semslam

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "semslam/models/OdometryComposition.h"
 
@@ -55,11 +56,12 @@ std::vector<TimeStep> selectKeyframes(const std::vector<TimeStep>& steps, double
       counts.droppedDetections += steps[i].detections.size();
     }
     kept.push_back(std::move(keyframe));
+    counts.chosen.push_back(chosen);
     lastKept = chosen;
     begin = end;
   }
   counts.keptSteps = kept.size();
-  if (summary != nullptr) *summary = counts;
+  if (summary != nullptr) *summary = std::move(counts);
   return kept;
 }
 

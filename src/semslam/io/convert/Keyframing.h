@@ -27,6 +27,7 @@ struct KeyframeSummary {
   std::size_t keptSteps = 0;
   std::size_t droppedSteps = 0;
   std::size_t droppedDetections = 0;
+  std::vector<std::size_t> chosen;  ///< per kept step, its index in the input steps
 };
 
 /// The keyframes of `steps` at `period` seconds, as described above.

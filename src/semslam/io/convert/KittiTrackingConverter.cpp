@@ -193,6 +193,8 @@ MeasurementLog convertKittiTracking(const std::string& folder, const ConvertOpti
   const double misclassification = misclassificationOf(modelCounts);
 
   MeasurementLog raw;
+  LogSources sources;
+  sources.dataset = folder;
   LogHeader& header = raw.header;
   header.dimension = 3;
   header.classes = kKittiClasses;
@@ -212,10 +214,14 @@ MeasurementLog convertKittiTracking(const std::string& folder, const ConvertOpti
   const double scale = kitti.odometryNoiseScale.value_or(1.0);
   std::mt19937 rng(options.seed);
   raw.steps.resize(frames);
+  sources.steps.resize(frames);
   for (std::size_t k = 0; k < frames; ++k) {
     TimeStep& step = raw.steps[k];
     step.time = kKittiFramePeriod * static_cast<double>(k);
     step.truePose = bodyPoses[k];
+    // The frame's pose makes its true pose and, with the previous frame's, its odometry.
+    const SourceLine poseRow{sequence.posePath, sequence.poseLines.at(k), 0};
+    sources.steps[k].step = sources.steps[k].truePose = sources.steps[k].odometry = poseRow;
     if (k == 0) continue;
     SE3 increment = bodyPoses[k - 1].inverse().compose(bodyPoses[k]);
     Matrix covariance = orbCovariance;
@@ -239,10 +245,13 @@ MeasurementLog convertKittiTracking(const std::string& folder, const ConvertOpti
     if (truth[i].kind == KittiTruthKind::Moving) detection.clutterSource = truth[i].track;
     if (truth[i].kind == KittiTruthKind::Landmark) landmarkTracks.insert(truth[i].track);
     raw.steps[static_cast<std::size_t>(d.frame)].detections.push_back(std::move(detection));
+    sources.steps[static_cast<std::size_t>(d.frame)].detections.push_back(
+        SourceLine{sequence.detectionPaths[static_cast<std::size_t>(d.detectedClass)], d.line, 0});
   }
   for (int id : landmarkTracks) {
     const KittiTrack& track = tracks.at(id);
     header.landmarkTruth.push_back(LandmarkTruth{id, kittiClassOfLabel(track.type).value_or(-1), track.meanPosition});
+    sources.landmarks.push_back(SourceLine{sequence.labelPath, track.firstLine, 0});
   }
 
   // Notes: the counts per truth kind and the confusion counts.
@@ -271,7 +280,7 @@ MeasurementLog convertKittiTracking(const std::string& folder, const ConvertOpti
          << "; true_pose = the ORB-SLAM3 stereo trajectory, an estimate, not ground truth";
   header.source = source.str();
 
-  MeasurementLog log = finishConversion(std::move(raw), options, stats);
+  MeasurementLog log = finishConversion(std::move(raw), std::move(sources), options, stats);
   if (stats != nullptr) {
     stats->notes.push_back(kinds.str() + " (before keyframing)");
     stats->notes.push_back(confusion);

@@ -11,6 +11,7 @@
 #include "semslam/core/InputExcerpt.h"
 #include "semslam/io/KittiFormat.h"
 #include "semslam/io/NumericTable.h"
+#include "semslam/io/NumericTable.h"
 #include "semslam/io/convert/ConversionCommon.h"
 
 namespace semslam {
@@ -226,6 +227,8 @@ KittiSequence readKittiSequence(const std::string& folder, int sequence) {
     // KITTI prints the rotation with 9 digits: project it onto SO(3) so that composing and inverting agree.
     s.cameraToWorld.emplace_back(SO3::nearest(pose.rotation().matrix()), pose.translation());
   }
+  // The trajectory reader reads the same data rows (io/TrajectoryTable.cpp), one pose each.
+  for (const NumericRow& row : readNumericTable(s.posePath, Separator::Whitespace)) s.poseLines.push_back(row.line);
   s.labels = readLabels(s.labelPath, s.cameraToWorld.size(), s.posePath);
   for (int c = 0; c < kKittiClasses; ++c) {
     readDetections(s.detectionPaths[static_cast<std::size_t>(c)], static_cast<KittiClass>(c), s.cameraToWorld.size(),

@@ -67,6 +67,7 @@ struct KittiSequence {
   std::string labelPath, posePath;
   std::array<std::string, kKittiClasses> detectionPaths;
   std::vector<SE3> cameraToWorld;  ///< one per frame: the ORB-SLAM3 estimate, rotation projected to SO(3)
+  std::vector<std::size_t> poseLines;  ///< one per frame: its line in the pose file
   std::vector<KittiLabel> labels;           ///< in file order (frames non-decreasing)
   std::vector<KittiDetection> detections;   ///< Car, then Pedestrian, then Cyclist file, each in file order
 };

@@ -101,7 +101,7 @@ std::map<int, KittiTrack> kittiTracks(const std::vector<KittiLabel>& labels, con
     if (label.track < 0) continue;
     const SE3& pose = bodyPoses.at(static_cast<std::size_t>(label.frame));
     positions[label.track].push_back(pose.transformFrom(kittiBodyPoint(label.bottomCentre)));
-    tracks.emplace(label.track, KittiTrack{label.type, 0.0, Point3::Zero(), 0});
+    tracks.emplace(label.track, KittiTrack{label.type, 0.0, Point3::Zero(), 0, label.line});
   }
   for (auto& [id, track] : tracks) {
     const std::vector<Point3>& p = positions[id];

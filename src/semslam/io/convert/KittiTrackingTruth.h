@@ -56,6 +56,7 @@ struct KittiTrack {
   double motion = 0.0;                         ///< metres, the diameter of its world positions
   Point3 meanPosition = Point3::Zero();        ///< world (body-convention) frame
   std::size_t labels = 0;
+  std::size_t firstLine = 0;                   ///< in the label file, of its first label
 };
 
 struct KittiDetectionTruth {

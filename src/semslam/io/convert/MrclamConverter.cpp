@@ -16,11 +16,14 @@ namespace {
 // Stamps have millisecond resolution; equal text gives equal doubles, the tolerance only guards the lookup.
 constexpr double kTimeTolerance = 1e-6;
 
-// The true pose at `time`, interpolated between the samples around it (sorted by time).
-std::optional<Pose> interpolateTruth(const std::vector<double>& times, const std::vector<SE2>& poses, double time) {
+// The true pose at `time`, interpolated between the samples around it (sorted by time); `sample` gets the index of
+// the sample at or after `time`.
+std::optional<Pose> interpolateTruth(const std::vector<double>& times, const std::vector<SE2>& poses, double time,
+                                     std::size_t& sample) {
   const auto upper = std::lower_bound(times.begin(), times.end(), time);
   if (upper == times.end()) return std::nullopt;
   const std::size_t j = static_cast<std::size_t>(upper - times.begin());
+  sample = j;
   if (times[j] == time) return Pose(poses[j]);
   if (j == 0) return std::nullopt;
   const double gap = times[j] - times[j - 1];
@@ -43,6 +46,8 @@ MeasurementLog convertMrclam(const std::string& folder, const ConvertOptions& op
   const std::string truthPath = datasetFile(folder, robot + "_Groundtruth.dat");
 
   MeasurementLog raw;
+  LogSources sources;
+  sources.dataset = folder;
   LogHeader& header = raw.header;
   header.dimension = 2;
   header.sensor.kind = SensorKind::RangeBearing;
@@ -51,7 +56,8 @@ MeasurementLog convertMrclam(const std::string& folder, const ConvertOptions& op
   header.sensor.fieldOfView = 1.2;
 
   const std::set<int> landmarks =
-      readLandmarkTruthTable(landmarkPath, 2, 5, "subject x y x_sd y_sd", "subject", header.landmarkTruth);
+      readLandmarkTruthTable(landmarkPath, 2, 5, "subject x y x_sd y_sd", "subject", header.landmarkTruth,
+                             sources.landmarks);
   std::map<int, int> subjectOfBarcode;
   for (const NumericRow& row : readDatasetTable(barcodePath, 2, "subject barcode")) {
     const int subject = integerField(barcodePath, row, 0, "subject", 0, 1 << 30);
@@ -69,25 +75,40 @@ MeasurementLog convertMrclam(const std::string& folder, const ConvertOptions& op
       throw InputError(odometryPath, odometry[i].line, "time stamps must not decrease");
     }
   }
+  // Each stamp with the first row (odometry before measurements, each in file order) that holds it.
+  struct Stamp {
+    double time;
+    SourceLine row;
+  };
+  std::vector<Stamp> stamps;
+  stamps.reserve(odometry.size() + measurements.size());
+  for (const NumericRow& row : odometry) stamps.push_back(Stamp{row.values[0], SourceLine{odometryPath, row.line, 0}});
+  for (const NumericRow& row : measurements) {
+    stamps.push_back(Stamp{row.values[0], SourceLine{measurementPath, row.line, 0}});
+  }
+  std::stable_sort(stamps.begin(), stamps.end(), [](const Stamp& a, const Stamp& b) { return a.time < b.time; });
+  stamps.erase(std::unique(stamps.begin(), stamps.end(), [](const Stamp& a, const Stamp& b) { return a.time == b.time; }),
+               stamps.end());
   std::vector<double> times;
-  times.reserve(odometry.size() + measurements.size());
-  for (const NumericRow& row : odometry) times.push_back(row.values[0]);
-  for (const NumericRow& row : measurements) times.push_back(row.values[0]);
-  std::sort(times.begin(), times.end());
-  times.erase(std::unique(times.begin(), times.end()), times.end());
+  times.reserve(stamps.size());
+  for (const Stamp& stamp : stamps) times.push_back(stamp.time);
 
   // Odometry: the command in force at the start of each interval.
   raw.steps.resize(times.size());
+  sources.steps.resize(times.size());
   std::size_t next = 0;  // the first odometry row after the current step's stamp
   double v = 0.0, omega = 0.0;
   Vector3 slip = UnicycleModel::defaultFloor();
   slip.y() = kMrclamLateralIntensity;
   for (std::size_t k = 0; k < times.size(); ++k) {
     raw.steps[k].time = times[k];
+    sources.steps[k].step = stamps[k].row;
     if (k > 0) {
       const double dt = times[k] - times[k - 1];
       const UnicycleModel model(kMrclamVelocityIntensity / dt, kMrclamTurnRateIntensity / dt, slip);
       raw.steps[k].odometry = model.integrate(v, omega, dt);
+      // The command in force, or the step's own stamp before the first command.
+      sources.steps[k].odometry = next > 0 ? SourceLine{odometryPath, odometry[next - 1].line, 0} : stamps[k].row;
     }
     while (next < odometry.size() && odometry[next].values[0] <= times[k]) {
       v = odometry[next].values[1];
@@ -107,7 +128,11 @@ MeasurementLog convertMrclam(const std::string& folder, const ConvertOptions& op
     truthTimes.push_back(row.values[0]);
     truthPoses.emplace_back(row.values[1], row.values[2], row.values[3]);
   }
-  for (TimeStep& step : raw.steps) step.truePose = interpolateTruth(truthTimes, truthPoses, step.time);
+  for (std::size_t k = 0; k < raw.steps.size(); ++k) {
+    std::size_t sample = 0;
+    raw.steps[k].truePose = interpolateTruth(truthTimes, truthPoses, raw.steps[k].time, sample);
+    if (raw.steps[k].truePose) sources.steps[k].truePose = SourceLine{truthPath, truth[sample].line, 0};
+  }
 
   // Detections: every measurement row, landmarks with their subject as truth, the rest as clutter.
   const Matrix covariance =
@@ -132,6 +157,7 @@ MeasurementLog convertMrclam(const std::string& folder, const ConvertOptions& op
       detection.truthId = subject->second;
     }
     raw.steps[*k].detections.push_back(std::move(detection));
+    sources.steps[*k].detections.push_back(SourceLine{measurementPath, row.line, 0});
   }
 
   std::ostringstream source;
@@ -144,7 +170,7 @@ MeasurementLog convertMrclam(const std::string& folder, const ConvertOptions& op
          << " rad, barcodes mapped through Barcodes.dat; clutter kept with truth not-a-landmark: " << robotSightings
          << " sightings of other robots, " << unknownBarcodes << " unknown barcodes; Vicon truth interpolated";
   header.source = source.str();
-  return finishConversion(std::move(raw), options, stats);
+  return finishConversion(std::move(raw), std::move(sources), options, stats);
 }
 
 }  // namespace semslam

@@ -26,26 +26,34 @@ struct Calibration {
 };
 
 Calibration readCalibration(const std::string& path) {
-  std::map<std::string, std::vector<double>> values;
+  struct Entry {
+    std::vector<double> values;
+    std::size_t line = 0;
+  };
+  std::map<std::string, Entry> entries;
   LineReader reader(path);
   while (reader.next()) {
     reader.requireAtLeast(1, "value");
-    values[std::string(reader.tag())] = reader.numbers(1, reader.valueCount());
+    entries[std::string(reader.tag())] = Entry{reader.numbers(1, reader.valueCount()), reader.lineNumber()};
   }
-  auto get = [&](const char* name, std::size_t count) {
-    const auto it = values.find(name);
-    if (it == values.end()) throw InputError(path, 0, std::string("missing entry '") + name + "'");
-    if (it->second.size() != count) {
-      throw InputError(path, 0,
-                       std::string("entry '") + name + "' needs " + std::to_string(count) + " values, has " +
-                           std::to_string(it->second.size()));
-    }
+  auto find = [&](const char* name) -> const Entry& {
+    const auto it = entries.find(name);
+    if (it == entries.end()) throw InputError(path, 0, std::string("missing entry '") + name + "'");
     return it->second;
+  };
+  auto get = [&](const char* name, std::size_t count) {
+    const Entry& entry = find(name);
+    if (entry.values.size() != count) {
+      throw InputError(path, entry.line,
+                       std::string("entry '") + name + "' needs " + std::to_string(count) + " values, has " +
+                           std::to_string(entry.values.size()));
+    }
+    return entry.values;
   };
   auto positive = [&](const char* name, std::size_t count) {
     const std::vector<double> v = get(name, count);
     for (double x : v) {
-      if (!(x > 0.0)) throw InputError(path, 0, std::string("entry '") + name + "' must be > 0");
+      if (!(x > 0.0)) throw InputError(path, find(name).line, std::string("entry '") + name + "' must be > 0");
     }
     return v;
   };
@@ -116,31 +124,41 @@ MeasurementLog convertStarryNight(const std::string& folder, const ConvertOption
   const Calibration calibration = readCalibration(datasetFile(folder, "calibration.txt"));
 
   MeasurementLog raw;
+  LogSources sources;
+  sources.dataset = folder;
   LogHeader& header = raw.header;
   header.dimension = 3;
   header.sensor.kind = SensorKind::RangeBearingElevation;
   header.sensor.bodyToSensor = SE3();
 
   const std::set<int> landmarkIds =
-      readLandmarkTruthTable(landmarkPath, 3, 4, "id x y z", "landmark id", header.landmarkTruth);
+      readLandmarkTruthTable(landmarkPath, 3, 4, "id x y z", "landmark id", header.landmarkTruth, sources.landmarks);
 
   const std::vector<NumericRow> velocities = readDatasetTable(velocityPath, 7, "t wx wy wz vx vy vz");
   const VelocityModel3 model(calibration.velocityVariance, calibration.angularVelocityVariance);
   raw.steps.resize(velocities.size());
+  sources.steps.resize(velocities.size());
   for (std::size_t k = 0; k < velocities.size(); ++k) {
     const std::vector<double>& u = velocities[k].values;
     raw.steps[k].time = u[0];
+    sources.steps[k].step = SourceLine{velocityPath, velocities[k].line, 0};
     if (k == 0) continue;
+    sources.steps[k].odometry = sources.steps[k].step;
     const double dt = u[0] - velocities[k - 1].values[0];
     if (!(dt > 0.0)) throw InputError(velocityPath, velocities[k].line, "time stamps must increase");
     raw.steps[k].odometry = model.integrate(Vector3(u[4], u[5], u[6]), Vector3(u[1], u[2], u[3]), dt);
   }
 
   const std::vector<NumericRow> truth = readDatasetTable(truthPath, 7, "t theta(3) r(3)");
-  if (truth.size() != velocities.size()) {
-    throw InputError(truthPath, 0,
-                     "has " + std::to_string(truth.size()) + " rows, imu_velocities.txt " +
-                         std::to_string(velocities.size()) + ": the converter expects one row per velocity stamp");
+  // One ground-truth row per velocity row: the first row the other file lacks, at its line.
+  const std::string truthCounts = " (groundtruth.txt has " + std::to_string(truth.size()) + " rows, imu_velocities.txt " +
+                                  std::to_string(velocities.size()) + "; the converter expects one row per velocity "
+                                  "stamp)";
+  if (truth.size() < velocities.size()) {
+    throw InputError(velocityPath, velocities[truth.size()].line, "no ground-truth row for this stamp" + truthCounts);
+  }
+  if (truth.size() > velocities.size()) {
+    throw InputError(truthPath, truth[velocities.size()].line, "no velocity row for this ground-truth row" + truthCounts);
   }
   for (std::size_t k = 0; k < truth.size(); ++k) {
     const std::vector<double>& g = truth[k].values;
@@ -150,6 +168,7 @@ MeasurementLog convertStarryNight(const std::string& folder, const ConvertOption
     }
     // C_vk_i = Exp(θ)ᵀ, so the vehicle's orientation in the inertial frame is C_vk_iᵀ = Exp(θ).
     raw.steps[k].truePose = SE3(SO3::Exp(Vector3(g[1], g[2], g[3])), Point3(g[4], g[5], g[6]));
+    sources.steps[k].truePose = SourceLine{truthPath, truth[k].line, 0};
   }
 
   // Pixel covariance: the stated variances with the measured correlations.
@@ -162,10 +181,15 @@ MeasurementLog convertStarryNight(const std::string& folder, const ConvertOption
   }
   const std::vector<NumericRow> rbe = readDatasetTable(rbePath, 9, "k t landmark_id range bearing elevation px py pz");
   const std::vector<NumericRow> stereo = readDatasetTable(stereoPath, 7, "k t landmark_id ul vl ur vr");
-  if (rbe.size() != stereo.size()) {
-    throw InputError(stereoPath, 0,
-                     "has " + std::to_string(stereo.size()) + " rows, rbe_measurements_vehicle_frame.txt " +
-                         std::to_string(rbe.size()) + ": the two must be row-aligned");
+  // Row-aligned: the first row the other file lacks, at its line.
+  const std::string rowCounts = " (stereo_measurements.txt has " + std::to_string(stereo.size()) +
+                                " rows, rbe_measurements_vehicle_frame.txt " + std::to_string(rbe.size()) +
+                                "; the two must be row-aligned)";
+  if (stereo.size() < rbe.size()) {
+    throw InputError(rbePath, rbe[stereo.size()].line, "no stereo row for this row" + rowCounts);
+  }
+  if (stereo.size() > rbe.size()) {
+    throw InputError(stereoPath, stereo[rbe.size()].line, "no range-bearing-elevation row for this row" + rowCounts);
   }
   const int lastStep = static_cast<int>(raw.steps.size()) - 1;
   for (std::size_t i = 0; i < rbe.size(); ++i) {
@@ -200,6 +224,8 @@ MeasurementLog convertStarryNight(const std::string& folder, const ConvertOption
     detection.covariance = covariance;
     detection.truthId = id;
     raw.steps[static_cast<std::size_t>(k)].detections.push_back(std::move(detection));
+    // The range, bearing and elevation are the rbe row's; its covariance comes from the stereo row of the same line.
+    sources.steps[static_cast<std::size_t>(k)].detections.push_back(SourceLine{rbePath, row.line, 0});
   }
 
   std::ostringstream source;
@@ -209,7 +235,7 @@ MeasurementLog convertStarryNight(const std::string& folder, const ConvertOption
          << "triangulated point in the vehicle frame with covariance propagated from the stereo pixel noise (y_var "
          << "with measured correlations), Vicon truth";
   header.source = source.str();
-  return finishConversion(std::move(raw), options, stats);
+  return finishConversion(std::move(raw), std::move(sources), options, stats);
 }
 
 }  // namespace semslam
