@@ -73,6 +73,26 @@ TEST(SimulateCli, ALayoutSeedGivesTheGeneratedLayoutAndExcludesAScenarioFile) {
   EXPECT_NE(both.output.find("excludes"), std::string::npos) << both.output;
 }
 
+TEST(SimulateCli, The3dLiftsWriteLogsThatReadBack) {
+  // The lifts' defaults must make logs the format accepts (a level σ within its conditioning bound of the 10 m
+  // start prior), with and without object heights, and the same seed the same bytes.
+  ScratchFolder folder;
+  const std::string level = folder.file("level.jsonl"), heights = folder.file("heights.jsonl"),
+                    again = folder.file("again.jsonl");
+  auto result = runSemslam("simulate aliased2d --steps 8 --seed 3 --lift-3d --out " + quoted(level));
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  const std::string withHeights = "simulate aliased2d --steps 8 --seed 3 --object-heights 0,0.4,0.8,0,0.4,0.8 --out ";
+  result = runSemslam(withHeights + quoted(heights));
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  ASSERT_EQ(runSemslam(withHeights + quoted(again)).exitCode, 0);
+  EXPECT_EQ(test::fileBytes(heights), test::fileBytes(again));
+  for (const std::string& path : {level, heights}) {
+    const MeasurementLog log = readMeasurementLog(path);
+    EXPECT_EQ(log.header.dimension, 3) << path;
+    EXPECT_EQ(log.steps.size(), 9u) << path;
+  }
+}
+
 TEST(SimulateCli, WriteScenarioReproducesTheShippedExample) {
   ScratchFolder folder;
   const std::string written = folder.file("default.json");

@@ -10,6 +10,9 @@
 // the extra rows of every factor have zero error and, up to the tilt's share (levelSigma² times the squared
 // distances), the same variance for every candidate. Measured on paper A's scenario under its 10 m start prior:
 // levelSigma 1e-4 moves normalised weights by ~1e-4, 1e-6 by less than 1e-6 (tests/hybrid/testHybrid3d.cpp).
+// The default is 1e-4: a measurement log refuses a covariance whose standard deviations span more than a factor
+// 1e6 (docs/measurement-log.md), and paper A's start prior has σ = 10 m in x and y, so 1e-6 would make a log that
+// `semslam simulate aliased2d --lift-3d` cannot write; 1e-4 keeps a factor 100 of margin.
 //
 // With heights (objectHeights[j] for the j-th landmark of the truth, m): the objects stand at those heights, the
 // robot stays level at z = 0, and the geometry is simulated anew in 3D: for each detection of the 2D track (the
@@ -32,7 +35,7 @@ namespace semslam {
 
 struct Aliased3dLift {
   std::vector<double> objectHeights;  ///< empty: level
-  double levelSigma = 1e-6;           ///< m (z) and rad (roll, pitch): the weights move by ~levelSigma² · 10⁴
+  double levelSigma = 1e-4;           ///< m (z) and rad (roll, pitch): the weights move by ~levelSigma² · 10⁴
   double heightSigma = 0.3;           ///< m: the map prior's height uncertainty (with heights)
   double elevationSigma = 0.02;       ///< rad
 };
