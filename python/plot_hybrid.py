@@ -48,8 +48,9 @@ def read_runs(study):
 
 
 def read_timings(study):
-    """timings.csv: every run's sampling_s and time_s, and the layout (rank, threads, ranks, wall_time_s), in the
-    order of runs.csv. A folder written before timings.csv existed kept the times in runs.csv."""
+    """timings.csv: every run's sampling_s and time_s, and the layout (rank, threads, ranks, wall_time_s), one row
+    per run (a track's geometric run serves every alpha of runs.csv: src/semslam/study/HybridStudy.h). A folder
+    written before timings.csv existed kept the times in runs.csv."""
     path = os.path.join(study, "timings.csv")
     return _read_numeric_csv(path if os.path.exists(path) else os.path.join(study, "runs.csv"))
 

@@ -82,8 +82,8 @@ void runStudy(StudyHybridArguments arguments) {
                    rows[i].layout, rows[i].alpha, rows[i].track, rows[i].model.c_str(), rows[i].error.c_str());
     }
   }
-  std::printf("hybrid study: %zu runs (%zu layouts x %d tracks x %zu alphas x 2 models, %d steps, %d failed) in "
-              "%.1f s on %d rank(s) x %d threads\n",
+  std::printf("hybrid study: %zu runs (%zu layouts x %d tracks x (%zu alphas with the classifier + 1 geometric), "
+              "%d steps, %d failed) in %.1f s on %d rank(s) x %d threads\n",
               rows.size(), options.layouts.size(), options.tracks, options.alphas.size(), options.steps,
               failedHybridRuns(rows), distributed.layout.wallSeconds, distributed.layout.ranks, options.threads);
   std::printf("wrote %s/{runs.csv,summary.csv,nees.csv,timings.csv,layouts.csv,layouts/}\n", arguments.out.c_str());

@@ -183,7 +183,7 @@ TEST(StudyCommand, SmallHybridStudyWritesSummary) {
   const auto result = runSemslam("study hybrid --layouts 2 --layout-seed 7 --tracks 2 --steps 2 --alpha 0.25 "
                                  "--samples 50 --out \"" + dir.string() + "\"");
   ASSERT_EQ(result.exitCode, 0) << result.output;
-  EXPECT_NE(result.output.find("8 runs (2 layouts x 2 tracks x 1 alphas x 2 models"), std::string::npos)
+  EXPECT_NE(result.output.find("8 runs (2 layouts x 2 tracks x (1 alphas with the classifier + 1 geometric)"), std::string::npos)
       << result.output;
   std::ifstream summary(dir / "summary.csv");
   std::string header;

@@ -31,7 +31,7 @@ HybridStudyOptions tinyStudy(int threads) {
 
 TEST(HybridStudy, ResultsDoNotDependOnTheThreadCount) {
   const std::vector<HybridStudyRow> one = runHybridStudy(tinyStudy(1)), two = runHybridStudy(tinyStudy(2));
-  ASSERT_EQ(one.size(), 16u);  // 2 layouts x 2 alphas x 2 tracks x 2 models
+  ASSERT_EQ(one.size(), 12u);  // 2 layouts x 2 tracks x (2 alphas with the classifier + 1 geometric)
   ASSERT_EQ(one.size(), two.size());
   for (std::size_t i = 0; i < one.size(); ++i) {
     EXPECT_EQ(one[i].layout, two[i].layout);
@@ -85,10 +85,66 @@ TEST(HybridStudy, WritesRunsSummaryNeesAndTimings) {
   EXPECT_EQ(header, "layout,alpha,model,track,rank,sampling_s,time_s,threads,ranks,wall_time_s");
   rows = 0;
   while (std::getline(timings, line)) ++rows;
-  EXPECT_EQ(rows, 16);
+  EXPECT_EQ(rows, 12);  // one per run
+  rows = 0;
+  while (std::getline(runs, line)) ++rows;
+  EXPECT_EQ(rows, 16);  // 2 layouts x 2 alphas x 2 tracks x 2 models
   EXPECT_TRUE(std::filesystem::exists(dir / "layouts.csv"));
   EXPECT_TRUE(std::filesystem::exists(dir / "layouts" / "layout_1.json"));
   std::filesystem::remove_all(dir);
+}
+
+TEST(HybridStudy, TheGeometricRunDoesNotDependOnAlpha) {
+  // The premise of running the geometric model once per track: alpha changes only the class scores, which the
+  // geometric model does not read. The same run (same seed) at two alphas gives the same row, bit for bit, while
+  // the classifier's differs.
+  HybridStudyOptions low = tinyStudy(1);
+  low.steps = 8;  // long enough that every track sees objects (the classifier's rows then differ)
+  HybridStudyOptions high = low;
+  low.alphas = {0.0};
+  high.alphas = {0.5};
+  for (const HybridStudyRun& run : hybridStudyRuns(low)) {
+    const HybridStudyRow a = runHybridStudyRun(low, run), b = runHybridStudyRun(high, run);
+    ASSERT_TRUE(a.error.empty()) << a.error;
+    if (run.classifier) {
+      EXPECT_TRUE(a.entropy != b.entropy || a.errWmax != b.errWmax || a.detCov != b.detCov) << "track " << run.track;
+      continue;
+    }
+    EXPECT_EQ(a.entropy, b.entropy) << "track " << run.track;
+    EXPECT_EQ(a.detCov, b.detCov);
+    EXPECT_EQ(a.errWmax, b.errWmax);
+    EXPECT_EQ(a.errWavg, b.errWavg);
+    EXPECT_EQ(a.finalNees, b.finalNees);
+    EXPECT_EQ(a.mixtureNees, b.mixtureNees);
+    EXPECT_EQ(a.components, b.components);
+    EXPECT_EQ(a.heaviestHistoryCorrect, b.heaviestHistoryCorrect);
+  }
+}
+
+TEST(HybridStudy, TheTablePairsEveryAlphasClassifierRunWithTheTracksGeometricRun) {
+  const HybridStudyOptions options = tinyStudy(2);
+  const std::vector<HybridStudyRun> runs = hybridStudyRuns(options);
+  const std::vector<HybridStudyRow> executed = runHybridStudy(options);
+  const std::vector<HybridStudyRow> table = hybridStudyTable(options, executed);
+  ASSERT_EQ(table.size(), 16u);
+  for (std::size_t i = 0; i < table.size(); i += 2) {
+    const HybridStudyRow &classifier = table[i], &geometric = table[i + 1];
+    EXPECT_EQ(classifier.model, "classifier");
+    EXPECT_EQ(geometric.model, "geometric");
+    EXPECT_EQ(classifier.alpha, geometric.alpha);
+    EXPECT_EQ(classifier.track, geometric.track);
+    EXPECT_EQ(classifier.layout, geometric.layout);
+    // The geometric row is the track's one geometric run, whatever the alpha.
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+      if (runs[r].classifier || runs[r].track != geometric.track ||
+          static_cast<int>(runs[r].layout) != geometric.layout) {
+        continue;
+      }
+      EXPECT_EQ(executed[r].entropy, geometric.entropy);
+      EXPECT_EQ(executed[r].errWmax, geometric.errWmax);
+    }
+  }
+  EXPECT_THROW(hybridStudyTable(options, std::vector<HybridStudyRow>(3)), std::invalid_argument);
 }
 
 TEST(HybridStudy, LayoutsHaveTheirOwnTracks) {
@@ -105,6 +161,8 @@ TEST(HybridStudy, LayoutsHaveTheirOwnTracks) {
 TEST(HybridStudy, NeesIsSplitByWhetherTheHeaviestHistoryIsCorrect) {
   // Hand-made rows: the heaviest component's NEES is 3 on the runs whose history is right and 300 on the one that is
   // wrong; the mixture's is 2. A failed run (NaN) and a mixture without a unique mean (NaN) are left out.
+  // Each track's geometric run (NEES 1000, wrong: it must not leak into the classifier's subsets) follows it, in
+  // the order of hybridStudyRuns.
   std::vector<HybridStudyRow> rows;
   const auto add = [&](int track, double nees, bool correct, double mixture) {
     HybridStudyRow row;
@@ -114,6 +172,10 @@ TEST(HybridStudy, NeesIsSplitByWhetherTheHeaviestHistoryIsCorrect) {
     row.finalNees = nees;
     row.heaviestComponentCorrect = correct;
     row.mixtureNees = mixture;
+    rows.push_back(row);
+    row.model = "geometric";
+    row.finalNees = row.mixtureNees = 1000.0;
+    row.heaviestComponentCorrect = false;
     rows.push_back(row);
   };
   add(0, 3.0, true, 2.0);
@@ -126,6 +188,8 @@ TEST(HybridStudy, NeesIsSplitByWhetherTheHeaviestHistoryIsCorrect) {
   std::filesystem::remove_all(dir);
   HybridStudyOptions options;
   options.layouts = generatedHybridStudyLayouts(1, 1);
+  options.alphas = {0.25};
+  options.tracks = 5;
   writeHybridStudy(dir.string(), options, rows);
   std::ifstream nees(dir / "nees.csv");
   std::string line;
@@ -140,7 +204,7 @@ TEST(HybridStudy, NeesIsSplitByWhetherTheHeaviestHistoryIsCorrect) {
     std::getline(fields, subset, ',');
     std::getline(fields, mean, ',');
     std::getline(fields, count, ',');
-    subsets[subset] = {std::stod(mean), std::stoi(count)};
+    if (model == "classifier") subsets[subset] = {std::stod(mean), std::stoi(count)};
   }
   EXPECT_EQ(subsets["heaviest"], std::make_pair(309.0 / 4.0, 4));
   EXPECT_EQ(subsets["heaviest_correct"], std::make_pair(3.0, 3));

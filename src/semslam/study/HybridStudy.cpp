@@ -7,6 +7,9 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <stdexcept>
+#include <string>
+#include <tuple>
 
 #include "semslam/core/ExactNumber.h"
 #include "semslam/eval/HypothesisMetrics.h"
@@ -151,11 +154,43 @@ std::vector<HybridStudyRun> hybridStudyRuns(const HybridStudyOptions& options) {
     for (std::size_t a = 0; a < options.alphas.size(); ++a) {
       for (int t = 0; t < options.tracks; ++t) {
         runs.push_back({l, a, t, true});
-        runs.push_back({l, a, t, false});
+        if (a == 0) runs.push_back({l, a, t, false});  // the geometric run serves every alpha (header)
       }
     }
   }
   return runs;
+}
+
+std::vector<HybridStudyRow> hybridStudyTable(const HybridStudyOptions& options,
+                                             const std::vector<HybridStudyRow>& executed) {
+  const std::vector<HybridStudyRun> runs = hybridStudyRuns(options);
+  if (executed.size() != runs.size()) {
+    throw std::invalid_argument("hybrid study: " + std::to_string(executed.size()) + " rows for " +
+                                std::to_string(runs.size()) + " runs");
+  }
+  // Index the rows by run: classifier[(layout, alpha, track)] and geometric[(layout, track)].
+  std::map<std::tuple<std::size_t, std::size_t, int>, const HybridStudyRow*> classifier;
+  std::map<std::pair<std::size_t, int>, const HybridStudyRow*> geometric;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const HybridStudyRun& run = runs[i];
+    if (run.classifier) {
+      classifier[{run.layout, run.alphaIndex, run.track}] = &executed[i];
+    } else {
+      geometric[{run.layout, run.track}] = &executed[i];
+    }
+  }
+  std::vector<HybridStudyRow> table;
+  table.reserve(2 * options.layouts.size() * options.alphas.size() * static_cast<std::size_t>(options.tracks));
+  for (std::size_t l = 0; l < options.layouts.size(); ++l) {
+    for (std::size_t a = 0; a < options.alphas.size(); ++a) {
+      for (int t = 0; t < options.tracks; ++t) {
+        table.push_back(*classifier.at({l, a, t}));
+        table.push_back(*geometric.at({l, t}));
+        table.back().alpha = options.alphas[a];
+      }
+    }
+  }
+  return table;
 }
 
 HybridStudyRow runHybridStudyRun(const HybridStudyOptions& options, const HybridStudyRun& run) {
@@ -191,7 +226,8 @@ int failedHybridRuns(const std::vector<HybridStudyRow>& rows) {
 }
 
 void writeHybridStudy(const std::string& directory, const HybridStudyOptions& options,
-                      const std::vector<HybridStudyRow>& rows, const StudyLayout& jobs) {
+                      const std::vector<HybridStudyRow>& executed, const StudyLayout& jobs) {
+  const std::vector<HybridStudyRow> rows = hybridStudyTable(options, executed);
   std::filesystem::create_directories(directory);
   const std::filesystem::path dir(directory);
   writeFileAtomically((dir / "runs.csv").string(), [&](std::ostream& out) {
@@ -221,8 +257,8 @@ void writeHybridStudy(const std::string& directory, const HybridStudyOptions& op
   }
   writeFileAtomically((dir / "timings.csv").string(), [&](std::ostream& out) {
     out << "layout,alpha,model,track,rank,sampling_s,time_s,threads,ranks,wall_time_s\n";
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-      const HybridStudyRow& r = rows[i];
+    for (std::size_t i = 0; i < executed.size(); ++i) {
+      const HybridStudyRow& r = executed[i];
       out << r.layout << ',' << seventeenDigitNumber(r.alpha) << ',' << r.model << ',' << r.track << ','
           << jobs.rankOf(i) << ',' << seventeenDigitNumber(r.samplingSeconds) << ','
           << seventeenDigitNumber(r.seconds) << ',' << jobs.threads << ',' << jobs.ranks << ','

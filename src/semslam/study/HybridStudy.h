@@ -1,8 +1,14 @@
 #pragma once
 // HybridStudy: paper A's statistical study (sec. V, Fig. 5), paired: for every layout, alpha and track, one simulated
 // log (the same tracks, priors and geometric noise at every alpha, only the class scores change:
-// sim/SimulationStreams.h), run twice, with the classifier model ("classifier") and geometric-only ("geometric"), on
-// the same log.
+// sim/SimulationStreams.h), run with the classifier model ("classifier") and geometric-only ("geometric").
+//
+// The geometric model reads no class score, and the scores are all that alpha changes, so its run on a track is the
+// same inference at every alpha: it runs once per layout and track (on the first alpha's log, with that alpha's
+// Monte Carlo seed) and its row is reported at every alpha (hybridStudyTable), paired with each alpha's classifier
+// run. The test HybridStudy.TheGeometricRunDoesNotDependOnAlpha holds the premise. A study of A alphas thus makes
+// A + 1 runs per track, not 2A (7 instead of 12 for the Fig. 5 analog), and the geometric curve of the alpha sweep
+// is flat, as the model is, instead of varying with the Monte Carlo seed.
 //
 // Layouts. Paper A studies many tracks in one scattered layout; one layout's answer may be the layout's, so the study
 // runs several: by default 10 seeded layouts of sim/Aliased2dLayout.h (layout seeds 1 … 10), or the scenario files a
@@ -82,22 +88,30 @@ struct HybridStudyRun {
   bool classifier = true;
 };
 
-/// The study's runs in row order (layouts, alphas inside, tracks inside, classifier then geometric); validates the
-/// options (throws std::invalid_argument).
+/// The study's runs (layouts, alphas inside, tracks inside; the classifier, then, at the first alpha only, the
+/// geometric model); validates the options (throws std::invalid_argument).
 std::vector<HybridStudyRun> hybridStudyRuns(const HybridStudyOptions& options);
+
+/// The study's table from the rows of its runs (`executed[i]` the row of hybridStudyRuns(options)[i]): for every
+/// layout, alpha and track, the classifier row of that alpha, then the track's geometric row with its alpha set to
+/// that alpha (the same run at every alpha, above).
+std::vector<HybridStudyRow> hybridStudyTable(const HybridStudyOptions& options,
+                                             const std::vector<HybridStudyRow>& executed);
 
 /// One run; its seeds depend on (options.seed, layout, alpha index, track, model) only. An exception inside the run is
 /// caught into the row's error.
 HybridStudyRow runHybridStudyRun(const HybridStudyOptions& options, const HybridStudyRun& run);
 
-/// Runs the study; `progress(done, total)` is called (from the workers, serialised) after every run.
+/// Runs the study: one row per run of hybridStudyRuns, in its order (hybridStudyTable makes the table of them);
+/// `progress(done, total)` is called (from the workers, serialised) after every run.
 std::vector<HybridStudyRow> runHybridStudy(const HybridStudyOptions& options,
                                            const std::function<void(int, int)>& progress = {});
 
 /// Runs whose row has an error.
 int failedHybridRuns(const std::vector<HybridStudyRow>& rows);
 
-/// runs.csv: every row but its times (layout is the index into layouts.csv). layouts.csv: layout,name,objects, and
+/// `executed`: the rows of the runs, as runHybridStudy returns them. runs.csv: every row of hybridStudyTable but its
+/// times (layout is the index into layouts.csv). layouts.csv: layout,name,objects, and
 /// every layout as a scenario file layouts/layout_<L>.json (rerun one with --scenario). summary.csv:
 /// alpha,model,entropy,det_cov,err_wmax,err_wavg,heaviest_correct, the means over layouts and tracks (per-layout
 /// statistics: python/plot_hybrid.py). nees.csv: alpha,model,subset,nees_mean,count,lower,upper, the pooled NEES
@@ -108,6 +122,6 @@ int failedHybridRuns(const std::vector<HybridStudyRow>& rows);
 /// that ran it; threads, ranks and the study's wall time repeated on every row). A job of `jobs` is a run. Every
 /// file is written atomically.
 void writeHybridStudy(const std::string& directory, const HybridStudyOptions& options,
-                      const std::vector<HybridStudyRow>& rows, const StudyLayout& jobs = {});
+                      const std::vector<HybridStudyRow>& executed, const StudyLayout& jobs = {});
 
 }  // namespace semslam
