@@ -7,8 +7,9 @@
 #   make bench    build and run the benchmarks (installs libceres-dev for the Ceres comparison), then the
 #                 incremental replay benchmark and the candidate pre-selection benchmark
 #   make fuzz     build the libFuzzer harnesses of fuzz/ with clang-14 (installs clang-14 and libclang-rt-14-dev),
-#                 run each FUZZ_SECONDS seconds (default 60; FUZZ_ONLY=a,b: only those) and print executions,
-#                 exec/s, corpus size and findings
+#                 run each FUZZ_SECONDS seconds (default 60; FUZZ_RUNS=N: stop a harness at N executions;
+#                 FUZZ_ONLY=a,b: only those; FUZZ_PARALLEL harnesses side by side, default one per core) and
+#                 print executions, exec/s, corpus size and findings
 #   make sanitize build the library, the tool and every C++ test with -fsanitize=address,undefined
 #                 -fno-sanitize-recover=all -D_GLIBCXX_ASSERTIONS into build-sanitize/ (MPI and the Python tests
 #                 off) and run them through ctest; any sanitizer report fails its test
@@ -30,6 +31,9 @@ DEB_PACKAGES := build-essential cmake pkg-config libeigen3-dev libsuitesparse-de
 BENCH_PACKAGES := libbenchmark-dev libceres-dev
 FUZZ_PACKAGES := clang-14 libclang-rt-14-dev
 FUZZ_SECONDS ?= 60
+# 0: no limit on executions (FUZZ_SECONDS alone bounds a harness).
+FUZZ_RUNS ?= 0
+FUZZ_PARALLEL ?= $(JOBS)
 # Empty: every harness; else a comma-separated list of them (FUZZ_ONLY=log,metrics).
 FUZZ_ONLY ?=
 FUZZ_HARNESSES := $(notdir $(wildcard fuzz/corpus/*))
@@ -85,8 +89,8 @@ fuzz: deps-fuzz
 	  -DSEMSLAM_BUILD_TESTS=OFF -DSEMSLAM_BUILD_EXAMPLES=OFF -DSEMSLAM_BUILD_BENCH=OFF -DSEMSLAM_BUILD_FUZZ=ON \
 	  "-DCMAKE_CXX_FLAGS=-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all"
 	cmake --build $(BUILD_DIR)-fuzz -j $(JOBS) --target $(addprefix fuzz_,$(FUZZ_HARNESSES))
-	$(PYTHON) fuzz/run_fuzzers.py --bin $(BUILD_DIR)-fuzz/bin --seconds $(FUZZ_SECONDS) --work $(BUILD_DIR)-fuzz/work \
-	  $(if $(FUZZ_ONLY),--only $(FUZZ_ONLY))
+	$(PYTHON) fuzz/run_fuzzers.py --bin $(BUILD_DIR)-fuzz/bin --seconds $(FUZZ_SECONDS) --runs $(FUZZ_RUNS) \
+	  --parallel $(FUZZ_PARALLEL) --work $(BUILD_DIR)-fuzz/work $(if $(FUZZ_ONLY),--only $(FUZZ_ONLY))
 
 # The library, the tool and the C++ tests with AddressSanitizer and UndefinedBehaviorSanitizer (every report is fatal)
 # and libstdc++'s assertions, in their own build folder. MPI off (OpenMPI's runtime is not built for ASan) and the
