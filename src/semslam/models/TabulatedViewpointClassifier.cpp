@@ -181,7 +181,9 @@ TabulatedViewpointClassifier TabulatedViewpointClassifier::fromJson(const std::s
   try {
     requireJsonNestingAtMost(text, source, 1);
     root = Json::parse(text);
-  } catch (const Json::parse_error& error) {
+  } catch (const Json::exception& error) {
+    // parse_error, and out_of_range for a number beyond a double (2e308; found by the fuzzer,
+    // fuzz/findings/classifier/number_2e308_out_of_range).
     throw InputError(source, 0, "not valid JSON: " + boundedMessage(error.what(), 200));
   }
   std::vector<ViewpointTable> tables;
@@ -190,6 +192,8 @@ TabulatedViewpointClassifier TabulatedViewpointClassifier::fromJson(const std::s
     validate(tables);
   } catch (const std::invalid_argument& error) {
     throw InputError(source, 0, std::string("viewpoint classifier table: ") + error.what());
+  } catch (const Json::exception& error) {  // a value of the wrong JSON type that parse() did not check
+    throw InputError(source, 0, "viewpoint classifier table: " + boundedMessage(error.what(), 200));
   }
   return TabulatedViewpointClassifier(std::move(tables));
 }
