@@ -4,11 +4,13 @@ comes first) and prints, per harness, the executions, executions per second, cor
 any harness has a finding.
 
 Each harness starts from a copy of fuzz/corpus/<harness>/ and fuzz/findings/<harness>/ (the source tree is never
-written) under --work; its findings (crash-*, leak-*, timeout-*, oom-*, slow-unit-* files) go to
+written) under --work; its findings (crash-*, leak-*, timeout-*, oom-* files; slow units are reported only past the
+20 s limit, where they are timeouts) go to
 --work/<harness>/findings/: copy each into fuzz/findings/<harness>/ once fixed, where `make test` replays it. Limits
 per input: 20 s, 4096 MB. --parallel N runs N harnesses side by side (one process each); the rows are printed in
-harness order whatever the order they finish in. The scratch input a harness writes per execution goes to --scratch
-(a tmpfs such as /dev/shm where there is one: the harnesses read files, and a file on tmpfs costs no disk write)."""
+harness order whatever the order they finish in. The scratch input a harness writes per execution goes to a private
+folder under --scratch (a tmpfs such as /dev/shm where there is one: the harnesses read files, and a file on tmpfs
+costs no disk write), removed when the harness ends."""
 
 import argparse
 import concurrent.futures
@@ -17,6 +19,7 @@ import re
 import shutil
 import subprocess
 import sys
+import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -37,16 +40,20 @@ def run_harness(harness, arguments):
     if os.path.isdir(old_findings):
         shutil.copytree(old_findings, corpus, dirs_exist_ok=True)
     os.makedirs(findings)
+    # -report_slow_units at the per-input time limit: an input under 20 s is within the contract, not a finding.
     command = [os.path.join(arguments.bin, f"fuzz_{harness}"), f"-max_total_time={arguments.seconds}",
-               "-timeout=20", "-rss_limit_mb=4096", "-print_final_stats=1",
+               "-timeout=20", "-report_slow_units=20", "-rss_limit_mb=4096", "-print_final_stats=1",
                f"-artifact_prefix={findings}{os.sep}", corpus]
     if arguments.runs > 0:
         command.insert(1, f"-runs={arguments.runs}")
-    environment = dict(os.environ)
-    if arguments.scratch:
-        environment["TMPDIR"] = arguments.scratch
+    # A private scratch folder per harness, removed afterwards (a crash leaves its input file and unpacked folder).
+    scratch = tempfile.mkdtemp(prefix=f"semslam-fuzz-{harness}-", dir=arguments.scratch)
+    environment = dict(os.environ, TMPDIR=scratch)
     started = time.monotonic()
-    result = subprocess.run(command, capture_output=True, text=True, env=environment)
+    try:
+        result = subprocess.run(command, capture_output=True, text=True, env=environment)
+    finally:
+        shutil.rmtree(scratch, ignore_errors=True)
     elapsed = time.monotonic() - started
     # libFuzzer's final statistics: "stat::number_of_executed_units: N" (-print_final_stats=1); "Done N runs in S
     # second(s)" when it stops at -max_total_time or -runs.

@@ -78,6 +78,7 @@ void runStudy(StudyHybridArguments arguments) {
   folder->commit();
   for (std::size_t i = 0; i < rows.size(); ++i) {
     if (!rows[i].error.empty() && !arguments.quiet) {
+      // i counts the runs made: a track's geometric run is one, at the first alpha, reported at every alpha.
       std::fprintf(stderr, "semslam: warning: run %zu (layout %d, alpha %g, track %d, %s) failed: %s\n", i,
                    rows[i].layout, rows[i].alpha, rows[i].track, rows[i].model.c_str(), rows[i].error.c_str());
     }

@@ -53,6 +53,18 @@ class PlotHybrid(unittest.TestCase):
             self.assertEqual(nees["heaviest_correct"]["count"] + nees["heaviest_wrong"]["count"], 8)
         self.assertIn("entropy_slope", result)
 
+    def test_runs_are_counted_once(self):
+        # runs.csv repeats each track's geometric run at both alphas; the per-run sums read it once, as timings.csv
+        # lists it once: 2 layouts x 4 tracks x (2 classifier runs + 1 geometric run).
+        sys.path.insert(0, PYTHON)
+        import plot_hybrid  # noqa: E402
+        rows = plot_hybrid.read_runs(self.study)
+        self.assertEqual(len(rows), 32)
+        runs = plot_hybrid.runs_of(rows)
+        self.assertEqual(len(runs), 24)
+        self.assertEqual(len(plot_hybrid.read_timings(self.study)), 24)
+        self.assertEqual(sum(1 for r in runs if r["model"] == "geometric"), 8)
+
     def test_fig5_writes_a_figure(self):
         out = os.path.join(self.scratch.name, "fig5.png")
         subprocess.run([sys.executable, "-B", SCRIPT, "fig5", self.study, "--out", out], check=True,

@@ -8,6 +8,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <tuple>
 
 #include "semslam/study/HybridStudy.h"
 
@@ -98,26 +99,31 @@ TEST(HybridStudy, TheGeometricRunDoesNotDependOnAlpha) {
   // The premise of running the geometric model once per track: alpha changes only the class scores, which the
   // geometric model does not read. The same run (same seed) at two alphas gives the same row, bit for bit, while
   // the classifier's differs.
-  HybridStudyOptions low = tinyStudy(1);
-  low.steps = 8;  // long enough that every track sees objects (the classifier's rows then differ)
-  HybridStudyOptions high = low;
-  low.alphas = {0.0};
-  high.alphas = {0.5};
-  for (const HybridStudyRun& run : hybridStudyRuns(low)) {
-    const HybridStudyRow a = runHybridStudyRun(low, run), b = runHybridStudyRun(high, run);
-    ASSERT_TRUE(a.error.empty()) << a.error;
-    if (run.classifier) {
-      EXPECT_TRUE(a.entropy != b.entropy || a.errWmax != b.errWmax || a.detCov != b.detCov) << "track " << run.track;
-      continue;
+  for (WeightMethod weights : {WeightMethod::Sampled, WeightMethod::Importance, WeightMethod::Analytic}) {
+    SCOPED_TRACE(static_cast<int>(weights));
+    HybridStudyOptions low = tinyStudy(1);
+    low.steps = 8;  // long enough that every track sees objects (the classifier's rows then differ)
+    low.hybrid.weights = weights;
+    HybridStudyOptions high = low;
+    low.alphas = {0.0};
+    high.alphas = {0.5};
+    for (const HybridStudyRun& run : hybridStudyRuns(low)) {
+      const HybridStudyRow a = runHybridStudyRun(low, run), b = runHybridStudyRun(high, run);
+      ASSERT_TRUE(a.error.empty()) << a.error;
+      if (run.classifier) {
+        EXPECT_TRUE(a.entropy != b.entropy || a.errWmax != b.errWmax || a.detCov != b.detCov)
+            << "track " << run.track;
+        continue;
+      }
+      EXPECT_EQ(a.entropy, b.entropy) << "track " << run.track;
+      EXPECT_EQ(a.detCov, b.detCov);
+      EXPECT_EQ(a.errWmax, b.errWmax);
+      EXPECT_EQ(a.errWavg, b.errWavg);
+      EXPECT_EQ(a.finalNees, b.finalNees);
+      EXPECT_EQ(a.mixtureNees, b.mixtureNees);
+      EXPECT_EQ(a.components, b.components);
+      EXPECT_EQ(a.heaviestHistoryCorrect, b.heaviestHistoryCorrect);
     }
-    EXPECT_EQ(a.entropy, b.entropy) << "track " << run.track;
-    EXPECT_EQ(a.detCov, b.detCov);
-    EXPECT_EQ(a.errWmax, b.errWmax);
-    EXPECT_EQ(a.errWavg, b.errWavg);
-    EXPECT_EQ(a.finalNees, b.finalNees);
-    EXPECT_EQ(a.mixtureNees, b.mixtureNees);
-    EXPECT_EQ(a.components, b.components);
-    EXPECT_EQ(a.heaviestHistoryCorrect, b.heaviestHistoryCorrect);
   }
 }
 
@@ -127,21 +133,29 @@ TEST(HybridStudy, TheTablePairsEveryAlphasClassifierRunWithTheTracksGeometricRun
   const std::vector<HybridStudyRow> executed = runHybridStudy(options);
   const std::vector<HybridStudyRow> table = hybridStudyTable(options, executed);
   ASSERT_EQ(table.size(), 16u);
-  for (std::size_t i = 0; i < table.size(); i += 2) {
-    const HybridStudyRow &classifier = table[i], &geometric = table[i + 1];
-    EXPECT_EQ(classifier.model, "classifier");
-    EXPECT_EQ(geometric.model, "geometric");
-    EXPECT_EQ(classifier.alpha, geometric.alpha);
-    EXPECT_EQ(classifier.track, geometric.track);
-    EXPECT_EQ(classifier.layout, geometric.layout);
-    // The geometric row is the track's one geometric run, whatever the alpha.
-    for (std::size_t r = 0; r < runs.size(); ++r) {
-      if (runs[r].classifier || runs[r].track != geometric.track ||
-          static_cast<int>(runs[r].layout) != geometric.layout) {
-        continue;
+  // The executed row of each run, by (layout, alpha index, track, model).
+  std::map<std::tuple<int, std::size_t, int, bool>, const HybridStudyRow*> ran;
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    ran[{static_cast<int>(runs[r].layout), runs[r].alphaIndex, runs[r].track, runs[r].classifier}] = &executed[r];
+  }
+  // runs.csv's order: layouts, alphas inside, tracks inside, the classifier then the geometric model; each alpha's
+  // classifier row is that alpha's run, each geometric row the track's one run (at the first alpha), relabelled.
+  std::size_t i = 0;
+  for (int layout = 0; layout < 2; ++layout) {
+    for (std::size_t a = 0; a < options.alphas.size(); ++a) {
+      for (int track = 0; track < options.tracks; ++track) {
+        for (bool classifier : {true, false}) {
+          const HybridStudyRow& row = table[i++];
+          const HybridStudyRow& source = *ran.at({layout, classifier ? a : 0, track, classifier});
+          EXPECT_EQ(row.layout, layout);
+          EXPECT_EQ(row.alpha, options.alphas[a]);
+          EXPECT_EQ(row.track, track);
+          EXPECT_EQ(row.model, classifier ? "classifier" : "geometric");
+          EXPECT_EQ(row.entropy, source.entropy) << "row " << i - 1;
+          EXPECT_EQ(row.errWmax, source.errWmax) << "row " << i - 1;
+          EXPECT_EQ(row.finalNees, source.finalNees) << "row " << i - 1;
+        }
       }
-      EXPECT_EQ(executed[r].entropy, geometric.entropy);
-      EXPECT_EQ(executed[r].errWmax, geometric.errWmax);
     }
   }
   EXPECT_THROW(hybridStudyTable(options, std::vector<HybridStudyRow>(3)), std::invalid_argument);
@@ -183,7 +197,7 @@ TEST(HybridStudy, NeesIsSplitByWhetherTheHeaviestHistoryIsCorrect) {
   add(2, 300.0, false, 2.0);
   add(3, 3.0, true, std::numeric_limits<double>::quiet_NaN());
   add(4, std::numeric_limits<double>::quiet_NaN(), true, std::numeric_limits<double>::quiet_NaN());
-  rows.back().error = "failed";
+  rows[rows.size() - 2].error = "failed";  // track 4's classifier run (its geometric run follows it)
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "semslam_hybrid_study_nees_split";
   std::filesystem::remove_all(dir);
   HybridStudyOptions options;
