@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <climits>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -142,10 +145,15 @@ double stableAngle(const SO2& rotation) {
   return rotation.theta();  // not met in practice (tested on 1e5 random rotations)
 }
 
-// SE3: the map F(q) = toQuaternion(fromQuaternion(q)) reaches a cycle after a few steps (rarely more than 50; the
-// cycle is almost always a single fixed point). The written quaternion is the cycle's smallest member
-// (lexicographically in x, y, z, w; zeros made positive). Reading it gives R = fromQuaternion(q), and writing again starts at F(q), in
-// the same cycle, so it picks the same member.
+// SE3: the map F(q) = toQuaternion(fromQuaternion(q)) on the doubles is eventually periodic. The written quaternion
+// is the smallest member (lexicographically in x, y, z, w; zeros made positive) of the cycle its orbit reaches within
+// kMaxSteps steps. Reading it gives R = fromQuaternion(q), and writing again starts at F(q), in the same cycle, so it
+// picks the same member. Measured (2000 random rotations): orbits of median length 2, at most 121 steps. Small
+// rotations (odometry increments) random-walk through the last bits of their small components and often reach no
+// cycle within kMaxSteps (118 of 200 rotations of 1e-4 to 2e-2 rad about one axis): q is then the
+// orbit's last member, deterministic but not a fixed point of a write-read-write. Seen members are found through a
+// hash map, so a long orbit costs O(kMaxSteps) conversions (it was a linear search per step, O(kMaxSteps²): 10 ms
+// per small rotation, found by the Starry Night converter's fuzz harness running at 12 inputs per second).
 Eigen::Quaterniond stableQuaternion(const SO3& rotation) {
   constexpr std::size_t kMaxSteps = 2048;
   const auto less = [](const Eigen::Vector4d& a, const Eigen::Vector4d& b) {
@@ -155,18 +163,27 @@ Eigen::Quaterniond stableQuaternion(const SO3& rotation) {
   const auto canonical = [](const Eigen::Quaterniond& q) {
     return Eigen::Quaterniond(q.w() + 0.0, q.x() + 0.0, q.y() + 0.0, q.z() + 0.0);
   };
+  const auto bitsHash = [](const Eigen::Vector4d& v) {
+    std::size_t h = 0;
+    for (int i = 0; i < 4; ++i) h = h * 0x9e3779b97f4a7c15ull + std::bit_cast<std::uint64_t>(v[i]);
+    return h;
+  };
+  const auto equal = [](const Eigen::Vector4d& a, const Eigen::Vector4d& b) { return a == b; };
+  std::unordered_map<Eigen::Vector4d, std::size_t, decltype(bitsHash), decltype(equal)> position(
+      2 * kMaxSteps, bitsHash, equal);
   std::vector<Eigen::Vector4d> orbit;
   Eigen::Quaterniond q = canonical(rotation.toQuaternion());
   while (orbit.size() < kMaxSteps) {
-    const auto seen = std::find(orbit.begin(), orbit.end(), q.coeffs());
-    if (seen != orbit.end()) {
-      const Eigen::Vector4d smallest = *std::min_element(seen, orbit.end(), less);
-      return Eigen::Quaterniond(smallest);  // coeffs order x, y, z, w
+    const auto seen = position.find(q.coeffs());
+    if (seen != position.end()) {
+      const auto first = orbit.begin() + static_cast<std::ptrdiff_t>(seen->second);
+      return Eigen::Quaterniond(*std::min_element(first, orbit.end(), less));  // coeffs order x, y, z, w
     }
+    position.emplace(q.coeffs(), orbit.size());
     orbit.push_back(q.coeffs());
     q = canonical(SO3::fromQuaternion(q).toQuaternion());
   }
-  return q;  // not met in practice
+  return q;
 }
 
 Json se2ToJson(const SE2& pose) { return Json::array({pose.x(), pose.y(), stableAngle(pose.rotation())}); }
