@@ -169,8 +169,8 @@ Eigen::Quaterniond stableQuaternion(const SO3& rotation) {
     return h;
   };
   const auto equal = [](const Eigen::Vector4d& a, const Eigen::Vector4d& b) { return a == b; };
-  std::unordered_map<Eigen::Vector4d, std::size_t, decltype(bitsHash), decltype(equal)> position(
-      2 * kMaxSteps, bitsHash, equal);
+  // Few buckets to start: most orbits close within a few steps, and this runs for every pose written.
+  std::unordered_map<Eigen::Vector4d, std::size_t, decltype(bitsHash), decltype(equal)> position(8, bitsHash, equal);
   std::vector<Eigen::Vector4d> orbit;
   Eigen::Quaterniond q = canonical(rotation.toQuaternion());
   while (orbit.size() < kMaxSteps) {
