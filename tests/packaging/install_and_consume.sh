@@ -3,7 +3,7 @@
 # checks that everything landed under that prefix and nowhere else (CLI, headers, CMake package, semslam.pc,
 # plotting scripts, licence and citation) and that the package names no MPI, then builds and runs the same tiny consumer
 # (tests/packaging/consumer/main.cpp) twice: with CMake's find_package(semslam) and with
-# `pkg-config --cflags --libs semslam`.
+# `pkg-config --cflags --libs semslam`; and, where the build made the Python module, imports it from the prefix.
 # Usage: install_and_consume.sh BUILD_DIR SOURCE_DIR VERSION
 set -euo pipefail
 build_dir=$1
@@ -44,3 +44,14 @@ flags=$(pkg-config --cflags --libs semslam) || fail "pkg-config cannot resolve s
 "${CXX:-c++}" -std=c++20 -O1 "$source_dir/tests/packaging/consumer/main.cpp" $flags -o "$work/pkg-config-consumer" \
   > "$work/pkg-build.log" 2>&1 || { echo "c++ ... $flags"; cat "$work/pkg-build.log"; exit 1; }
 "$work/pkg-config-consumer" "$version"
+
+# 3. Python: where the build made the module (SEMSLAM_BUILD_PYTHON), the installed package imports from the prefix
+# alone (docs/python.md), not from the build folder.
+if [ -d "$build_dir/python/semslam" ]; then
+  package=$(ls -d "$prefix"/lib/python3*/dist-packages/semslam 2>/dev/null) || fail "the Python package was not installed"
+  [ -e "$package/__init__.py" ] || fail "the Python package has no __init__.py"
+  imported=$(cd "$work" && PYTHONPATH="$(dirname "$package")" /usr/bin/python3 -B -c \
+    "import semslam; print(semslam.__version__, semslam.__file__, semslam.SE2(1, 2, 0.5).compose(semslam.SE2()).x())") \
+    || fail "import semslam from $(dirname "$package") failed"
+  [ "$imported" = "$version $package/__init__.py 1.0" ] || fail "the installed module says '$imported'"
+fi

@@ -1,0 +1,61 @@
+#include "RunOptions.h"
+
+#include <cstdint>
+#include <stdexcept>
+
+#include "MethodOptions.h"
+#include "OptionValidators.h"
+#include "semslam/core/InputError.h"
+#include "semslam/run/KnownTrajectoryCeiling.h"
+#include "semslam/solve/UnconstrainedSystem.h"
+
+namespace semslam::cli {
+
+void addRunMethodOptions(CLI::App* command, RunMethodArguments& arguments) {
+  command->add_option("--method", arguments.method, "known, ml, gpda, mm, mm-nh, hybrid or hybrid-geometric")
+      ->check(CLI::IsMember(methodNames()))
+      ->capture_default_str();
+  command->add_option("--smoother", arguments.smoother,
+                      "back end: incremental or batch (default: incremental for known..mm-nh, batch for hybrid)")
+      ->check(CLI::IsMember({"incremental", "batch"}));
+  addSemanticSlamOptions(command, arguments.options.slam);
+  command->add_flag("--no-covariances", arguments.noCovariances,
+                    "skip the marginal covariance of every pose (no NEES, no ellipses; faster)");
+  command->add_flag("--on-known-trajectory", arguments.onKnownTrajectory,
+                    "paper B's methods: pin the poses to the known-association estimate (the association ceiling)");
+  command->add_option("--pose-error-scale", arguments.poseErrorScale,
+                      "with --on-known-trajectory: move each pose k by a draw from N(0, s² Σ_k), Σ_k its known-DA covariance")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  command->add_option("--seed", arguments.options.hybrid.seed,
+                      "hybrid: seed of the Monte Carlo draws; --pose-error-scale: seed of the pose errors")
+      ->check(unsignedInteger64())
+      ->capture_default_str();
+  addHybridOptions(command, arguments.options.hybrid);
+}
+
+MethodRun runFromArguments(const MeasurementLog& log, RunMethodArguments arguments, const std::string& source,
+                           const RunProgress& progress) {
+  MethodOptions& options = arguments.options;
+  options.method = parseMethod(arguments.method);
+  if (!arguments.smoother.empty()) options.smoother = parseSmootherKind(arguments.smoother);
+  options.poseCovariances = !arguments.noCovariances;
+  try {
+    if (arguments.onKnownTrajectory) {
+      return runOnKnownTrajectory(log, options, arguments.poseErrorScale,
+                                  static_cast<std::uint32_t>(options.hybrid.seed));
+    }
+    return runMethod(log, options, progress);
+  } catch (const std::invalid_argument& error) {
+    throw InputError(source, 0, error.what());
+  } catch (const std::domain_error& error) {  // a geometry the models cannot take (a point at its sensor)
+    throw InputError(source, 0, error.what());
+  } catch (const UnconstrainedSystemError& error) {  // the log leaves a variable free: say what would hold it
+    throw InputError(source, 0,
+                     std::string(error.what()) +
+                         " (In a measurement log the header's initial_pose is the prior on the first pose and "
+                         "landmark_priors hold known landmarks; docs/measurement-log.md.)");
+  }
+}
+
+}  // namespace semslam::cli

@@ -1,0 +1,212 @@
+// semslam.run(method, log, **options): one estimation method over a measurement log, as `semslam run` does it.
+//
+// The keyword arguments are the run command's flags with `_` for `-` (apps/semslam/RunOptions.h: the same option
+// binders parse them, so checks and defaults are the command's): `gate=0.95` is `--gate 0.95`, a flag such as
+// `no_covariances=True` is `--no-covariances` (False leaves it out). An unknown keyword raises TypeError naming
+// the accepted ones; a value the command would refuse raises ValueError with the command's message.
+//
+// The result holds, as numpy arrays and plain Python objects:
+//   trajectory    N×3 (x, y, θ) or N×7 (x, y, z, qx, qy, qz, qw), one row per step, in time order
+//   timestamps    N
+//   landmarks     dict of arrays: id, position (M×2 or M×3), class (−1: no class belief), class_probability
+//   associations  dict of arrays, one entry per detection: step, detection, landmark (NULL_HYPOTHESIS = −1),
+//                 weight, truth (a landmark id, NOT_A_LANDMARK, UNKNOWN_TRUTH, or NO_TRUTH where the log has
+//                 none), chi2 (NaN without a landmark)
+//   hypotheses    hybrid methods: every step's belief, the dicts of hypotheses.jsonl; None otherwise
+//   metrics       the dict of metrics.json, equal to the command's file
+// The GIL is released while the method runs.
+
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "../../apps/semslam/RunOptions.h"
+#include "Bindings.h"
+#include "PoseArrays.h"
+#include "semslam/io/MeasurementLogFile.h"
+#include "semslam/io/RunMetricsFile.h"
+
+namespace semslam::python {
+namespace {
+
+constexpr int kNullHypothesis = -1;
+constexpr int kNoTruth = -3;
+
+struct RunResult {
+  std::string method;
+  py::object trajectory, timestamps, landmarks, associations, hypotheses, metrics;
+};
+
+/// `--flag value...` for one keyword argument, checked against the options `command` knows.
+void appendArgument(const CLI::App& command, const std::string& keyword, const py::handle& value,
+                    std::vector<std::string>& argv) {
+  std::string flag = "--" + keyword;
+  for (char& c : flag) c = c == '_' ? '-' : c;
+  const CLI::Option* option = command.get_option_no_throw(flag);
+  if (option == nullptr || flag == "--method") {
+    std::string accepted;
+    for (const CLI::Option* known : command.get_options()) {
+      if (known->get_lnames().empty()) continue;
+      std::string name = known->get_lnames().front();
+      if (name == "help" || name == "method") continue;
+      for (char& c : name) c = c == '-' ? '_' : c;
+      accepted += (accepted.empty() ? "" : ", ") + name;
+    }
+    throw py::type_error("run() got an unexpected keyword argument '" + keyword + "'; accepted: " + accepted);
+  }
+  if (option->get_expected_max() == 0) {  // a flag: takes no value
+    if (!py::isinstance<py::bool_>(value)) throw py::type_error(keyword + ": a flag takes True or False");
+    if (value.cast<bool>()) argv.push_back(flag);
+    return;
+  }
+  if (py::isinstance<py::bool_>(value)) throw py::type_error(keyword + ": takes a value, not True or False");
+  argv.push_back(flag);
+  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    for (const py::handle item : value) argv.push_back(py::str(item).cast<std::string>());
+  } else {
+    argv.push_back(py::str(value).cast<std::string>());  // str(float) is the shortest text that reads back exactly
+  }
+}
+
+cli::RunMethodArguments parseArguments(const std::string& method, const py::kwargs& options) {
+  cli::RunMethodArguments arguments;
+  CLI::App command("semslam.run");
+  cli::addRunMethodOptions(&command, arguments);
+  std::vector<std::string> argv = {"--method", method};
+  for (const auto& [key, value] : options) appendArgument(command, key.cast<std::string>(), value, argv);
+  std::reverse(argv.begin(), argv.end());  // CLI11 takes a vector of arguments last first
+  try {
+    command.parse(argv);
+  } catch (const CLI::ParseError& error) {
+    throw py::value_error(std::string("run(): ") + error.what());
+  }
+  return arguments;
+}
+
+py::dict landmarkArrays(const RunOutput& output) {
+  const auto m = static_cast<Eigen::Index>(output.landmarks.size());
+  Eigen::VectorXi ids(m), classes(m);
+  Vector probabilities(m);
+  Matrix positions(m, output.dimension);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const RunLandmark& landmark = output.landmarks[i];
+    ids(i) = landmark.id;
+    positions.row(i) = landmark.position.transpose();
+    classes(i) = landmark.classIndex;
+    probabilities(i) = landmark.classIndex >= 0 ? landmark.classProbability : std::numeric_limits<double>::quiet_NaN();
+  }
+  py::dict landmarks;
+  landmarks["id"] = ids;
+  landmarks["position"] = positions;
+  landmarks["class"] = classes;
+  landmarks["class_probability"] = probabilities;
+  return landmarks;
+}
+
+py::dict associationArrays(const RunOutput& output) {
+  const auto n = static_cast<Eigen::Index>(output.associations.size());
+  Eigen::VectorXi steps(n), detections(n), landmarks(n), truths(n);
+  Vector weights(n), chi2(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const AssociationRecord& record = output.associations[i];
+    steps(i) = record.step;
+    detections(i) = record.detection;
+    landmarks(i) = record.landmark.value_or(kNullHypothesis);
+    weights(i) = record.weight;
+    truths(i) = record.truth.value_or(kNoTruth);
+    chi2(i) = record.chi2.value_or(std::numeric_limits<double>::quiet_NaN());
+  }
+  py::dict associations;
+  associations["step"] = steps;
+  associations["detection"] = detections;
+  associations["landmark"] = landmarks;
+  associations["weight"] = weights;
+  associations["truth"] = truths;
+  associations["chi2"] = chi2;
+  return associations;
+}
+
+RunResult toPython(const MeasurementLog& log, const MethodRun& run) {
+  const py::object loads = py::module_::import("json").attr("loads");
+  RunResult result;
+  result.method = methodName(run.method);
+  result.trajectory = poseArray(run.result.poses);
+  Vector times(static_cast<Eigen::Index>(log.steps.size()));
+  for (std::size_t k = 0; k < log.steps.size(); ++k) times(k) = log.steps[k].time;
+  result.timestamps = py::cast(times);
+  result.landmarks = landmarkArrays(run.output);
+  result.associations = associationArrays(run.output);
+  result.metrics = loads(runMetricsToJson(run.evaluation.metrics));
+  result.hypotheses = py::none();
+  if (run.hypothesesJsonl) {
+    std::ostringstream text;
+    run.hypothesesJsonl->copyTo(text);
+    py::list steps;
+    std::istringstream lines(text.str());
+    for (std::string line; std::getline(lines, line);) {
+      if (!line.empty()) steps.append(loads(line));
+    }
+    result.hypotheses = steps;
+  }
+  return result;
+}
+
+RunResult runOn(const MeasurementLog& log, const std::string& source, const std::string& method,
+                const py::kwargs& options) {
+  const cli::RunMethodArguments arguments = parseArguments(method, options);
+  MethodRun run;
+  {
+    py::gil_scoped_release release;
+    run = cli::runFromArguments(log, arguments, source);
+  }
+  return toPython(log, run);
+}
+
+}  // namespace
+
+void bindRun(py::module_& module) {
+  module.attr("NULL_HYPOTHESIS") = kNullHypothesis;
+  module.attr("NOT_A_LANDMARK") = kNotALandmark;
+  module.attr("UNKNOWN_TRUTH") = kUnknownTruth;
+  module.attr("NO_TRUTH") = kNoTruth;
+  module.attr("METHODS") = methodNames();
+
+  py::class_<RunResult>(module, "RunResult", "What semslam.run returns (see its documentation).")
+      .def_readonly("method", &RunResult::method)
+      .def_readonly("trajectory", &RunResult::trajectory)
+      .def_readonly("timestamps", &RunResult::timestamps)
+      .def_readonly("landmarks", &RunResult::landmarks)
+      .def_readonly("associations", &RunResult::associations)
+      .def_readonly("hypotheses", &RunResult::hypotheses)
+      .def_readonly("metrics", &RunResult::metrics)
+      .def("__repr__", [](const RunResult& r) {
+        return "<semslam.RunResult " + r.method + ": " + std::to_string(py::len(r.trajectory)) + " poses>";
+      });
+
+  module.def(
+      "run",
+      [](const std::string& method, const py::object& log, const py::kwargs& options) {
+        if (py::isinstance<MeasurementLog>(log)) {
+          return runOn(log.cast<const MeasurementLog&>(), "measurement log (in memory)", method, options);
+        }
+        const std::string path = py::str(py::module_::import("os").attr("fspath")(log)).cast<std::string>();
+        MeasurementLog loaded;
+        {
+          py::gil_scoped_release release;
+          loaded = readMeasurementLog(path);
+        }
+        return runOn(loaded, path, method, options);
+      },
+      py::arg("method"), py::arg("log"),
+      "Runs one method (known, ml, gpda, mm, mm-nh, hybrid, hybrid-geometric) over a measurement log (a path or "
+      "a MeasurementLog); keyword arguments are `semslam run`'s flags with _ for -.");
+}
+
+}  // namespace semslam::python

@@ -1,0 +1,122 @@
+"""semslam.run against `semslam run`: the same metrics.json, the same run folder contents, the same errors."""
+
+import csv
+import json
+
+import numpy as np
+import pytest
+
+import semslam
+
+WALL_TIMES = {"time_s"}  # the only metrics a second run may change (docs/metrics.md)
+
+
+@pytest.fixture(scope="module")
+def logs(cli, tmp_path_factory):
+    folder = tmp_path_factory.mktemp("logs")
+    cli("simulate", "semantic", "--out", folder / "planar.jsonl", "--seed", 3, "--steps", 60, "--classes", 3)
+    cli("simulate", "semantic", "--out", folder / "spatial.jsonl", "--seed", 4, "--steps", 40, "--classes", 3,
+        "--dimension", 3)
+    cli("simulate", "aliased2d", "--out", folder / "aliased.jsonl", "--steps", 8)
+    return folder
+
+
+def cli_run(cli, log, folder, method, *flags):
+    cli("run", "--method", method, "--in", log, "--out", folder, "--quiet", "--overwrite", *flags)
+    return json.loads((folder / "metrics.json").read_text())
+
+
+@pytest.mark.parametrize("log_name, method, flags, keywords", [
+    ("planar.jsonl", "mm-nh", [], {}),
+    ("planar.jsonl", "known", ["--no-covariances"], {"no_covariances": True}),
+    ("planar.jsonl", "gpda", ["--gate", "0.95", "--em-window", "3"], {"gate": 0.95, "em_window": 3}),
+    ("planar.jsonl", "ml", ["--birth", "threshold", "--no-warm-start"], {"birth": "threshold", "no_warm_start": True}),
+    ("spatial.jsonl", "mm", ["--smoother", "batch"], {"smoother": "batch"}),
+    ("aliased.jsonl", "hybrid", ["--seed", "4"], {"seed": 4}),
+    ("aliased.jsonl", "hybrid-geometric", ["--max-components", "4"], {"max_components": 4}),
+])
+def test_run_equals_the_command_line_tool(cli, logs, tmp_path, log_name, method, flags, keywords):
+    log = logs / log_name
+    expected = cli_run(cli, log, tmp_path / "cli", method, *flags)
+    result = semslam.run(method, str(log), **keywords)
+    assert set(result.metrics) == set(expected)
+    differing = {key for key in expected if result.metrics[key] != expected[key]}
+    assert differing <= WALL_TIMES, f"differ: {sorted(differing - WALL_TIMES)}"
+
+    # The arrays hold what the run folder holds.
+    with open(tmp_path / "cli" / "trajectory.tum") as stream:
+        rows = np.array([[float(x) for x in line.split()] for line in stream if line.strip()])
+    assert result.trajectory.shape[0] == rows.shape[0] == len(result.timestamps)
+    np.testing.assert_allclose(result.timestamps, rows[:, 0], rtol=1e-15)
+    np.testing.assert_allclose(result.trajectory[:, :2], rows[:, 1:3], rtol=1e-12, atol=1e-12)
+    assert result.trajectory.shape[1] == (7 if log_name == "spatial.jsonl" else 3)
+    with open(tmp_path / "cli" / "associations.csv") as stream:
+        associations = list(csv.DictReader(stream))
+    assert len(associations) == len(result.associations["landmark"])
+    for row, landmark in zip(associations, result.associations["landmark"]):
+        assert int(row["landmark"]) == landmark if row["landmark"] != "null" else landmark == semslam.NULL_HYPOTHESIS
+    assert (result.hypotheses is not None) == method.startswith("hybrid")
+    if result.hypotheses is not None:
+        assert len(result.hypotheses) == len(result.timestamps)
+
+
+def test_run_takes_a_loaded_log_and_is_deterministic(logs):
+    log = semslam.read_log(str(logs / "planar.jsonl"))
+    assert len(log) == 61 and log.dimension == 2 and log.classes == 3
+    first = semslam.run("mm-nh", log)
+    second = semslam.run("mm-nh", str(logs / "planar.jsonl"))
+    np.testing.assert_array_equal(first.trajectory, second.trajectory)
+    np.testing.assert_array_equal(first.associations["landmark"], second.associations["landmark"])
+
+
+def test_bad_options_raise_with_the_command_line_tools_message(logs):
+    log = str(logs / "planar.jsonl")
+    with pytest.raises(TypeError, match="unexpected keyword argument 'gates'.*gate"):
+        semslam.run("mm-nh", log, gates=0.9)
+    with pytest.raises(ValueError, match="--gate"):
+        semslam.run("mm-nh", log, gate=2.0)
+    with pytest.raises(ValueError, match="--method"):
+        semslam.run("mm-nhh", log)
+    with pytest.raises(TypeError, match="True or False"):
+        semslam.run("mm-nh", log, no_covariances=1)
+    with pytest.raises(ValueError, match="--seed"):
+        semslam.run("hybrid", log, seed=-1)
+
+
+def test_a_malformed_log_raises_with_its_line_number(logs, tmp_path):
+    lines = (logs / "planar.jsonl").read_text().splitlines()
+    lines[2] = lines[2].replace('"time"', '"tiem"', 1)
+    (tmp_path / "bad.jsonl").write_text("\n".join(lines) + "\n")
+    for call in (lambda: semslam.read_log(str(tmp_path / "bad.jsonl")),
+                 lambda: semslam.run("mm-nh", str(tmp_path / "bad.jsonl"))):
+        with pytest.raises(semslam.InputError) as error:
+            call()
+        assert error.value.line == 3
+        assert str(error.value).startswith(str(tmp_path / "bad.jsonl") + ":3: ")
+    with pytest.raises(semslam.InputError, match="does not exist"):
+        semslam.run("mm-nh", str(tmp_path / "missing.jsonl"))
+
+
+def test_a_log_written_from_python_reads_back_the_same(logs, tmp_path):
+    log = semslam.read_log(str(logs / "spatial.jsonl"))
+    semslam.write_log(str(tmp_path / "copy.jsonl"), log)
+    assert (tmp_path / "copy.jsonl").read_bytes() == (logs / "spatial.jsonl").read_bytes()
+
+
+def test_ate_and_rpe_equal_the_command_line_tool(cli, logs, tmp_path):
+    cli_run(cli, logs / "planar.jsonl", tmp_path / "run", "mm-nh")
+    estimate = semslam.read_trajectory(str(tmp_path / "run" / "trajectory.tum"))
+    reference = semslam.read_trajectory(str(tmp_path / "run" / "truth.tum"))
+    for kind, function, flags in (("ape", semslam.ate, {"align": "se3"}),
+                                  ("rpe", semslam.rpe, {"delta": 2, "relation": "angle_deg"})):
+        arguments = ["eval", kind, "--est", tmp_path / "run" / "trajectory.tum", "--ref",
+                     tmp_path / "run" / "truth.tum", "--json"]
+        arguments += ["--align", "se3"] if kind == "ape" else ["--delta", "2", "--relation", "angle_deg"]
+        expected = json.loads(cli(*arguments).stdout)
+        statistics = function(estimate, reference, **flags)
+        for key in ("max", "mean", "median", "min", "rmse", "sse", "std"):
+            assert statistics[key] == pytest.approx(expected[key], rel=1e-12, abs=1e-15)
+    # From the arrays of a run, without files.
+    result = semslam.run("mm-nh", str(logs / "planar.jsonl"))
+    from_arrays = semslam.ate(semslam.Trajectory(result.timestamps, result.trajectory), reference, align="se3")
+    assert from_arrays["rmse"] == pytest.approx(semslam.ate(estimate, reference, align="se3")["rmse"], rel=1e-9)
