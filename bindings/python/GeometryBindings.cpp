@@ -7,6 +7,7 @@
 #include <pybind11/pybind11.h>
 
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "Bindings.h"
@@ -36,6 +37,21 @@ void bindGroupOperations(Class& group) {
       .def("equals", [](const Group& a, const Group& b, double tol) { return a.equals(b, tol); }, py::arg("other"),
            py::arg("tol") = 1e-9)
       .def_property_readonly_static("dimension", [](py::object) { return Group::kDim; });
+}
+
+/// A rotation from a matrix a user passed: finite, or ValueError.
+SO3 rotationFrom(const Matrix3& R) {
+  if (!R.allFinite()) throw std::invalid_argument("a rotation matrix must be finite");
+  return SO3::nearest(R);
+}
+
+/// A pose from a 4×4 homogeneous matrix: finite, bottom row [0 0 0 1], or ValueError.
+SE3 poseFrom(const Matrix4& T) {
+  if (!T.allFinite()) throw std::invalid_argument("a pose matrix must be finite");
+  if ((T.bottomRows<1>() - Eigen::RowVector4d(0, 0, 0, 1)).cwiseAbs().maxCoeff() > 1e-9) {
+    throw std::invalid_argument("a pose matrix has the bottom row [0, 0, 0, 1]");
+  }
+  return SE3(rotationFrom(T.topLeftCorner<3, 3>()), T.topRightCorner<3, 1>());
 }
 
 std::string formatted(const Eigen::MatrixXd& values) {
@@ -76,8 +92,7 @@ void bindGeometry(py::module_& module) {
 
   py::class_<SO3> so3(module, "SO3", "A rotation in 3D.");
   so3.def(py::init<>())
-      .def(py::init([](const Matrix3& R) { return SO3::nearest(R); }), py::arg("matrix"),
-           "the rotation nearest to a 3×3 matrix (its polar factor)")
+      .def(py::init(&rotationFrom), py::arg("matrix"), "the rotation nearest to a 3×3 matrix (its polar factor)")
       .def_static("from_quaternion",
                   [](double qx, double qy, double qz, double qw) {
                     return SO3::fromQuaternion(Eigen::Quaterniond(qw, qx, qy, qz));
@@ -98,8 +113,7 @@ void bindGeometry(py::module_& module) {
   py::class_<SE3> se3(module, "SE3", "A pose in 3D: rotation R, then translation t (x_world = R x_body + t).");
   se3.def(py::init<>())
       .def(py::init<const SO3&, const Point3&>(), py::arg("rotation"), py::arg("translation"))
-      .def(py::init([](const Matrix4& T) { return SE3(SO3::nearest(T.topLeftCorner<3, 3>()), T.topRightCorner<3, 1>()); }),
-           py::arg("matrix"), "from a 4×4 homogeneous matrix (the rotation block projected onto SO3)")
+      .def(py::init(&poseFrom), py::arg("matrix"), "from a 4×4 homogeneous matrix (the rotation block projected onto SO3)")
       .def("translation", [](const SE3& T) { return Point3(T.translation()); })
       .def("rotation", [](const SE3& T) { return T.rotation(); })
       .def("transform_from", [](const SE3& T, const Point3& p) { return T.transformFrom(p); }, py::arg("point"))

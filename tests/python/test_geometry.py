@@ -52,11 +52,19 @@ def test_so3_quaternion_round_trip():
         assert semslam.SO3(rotation.matrix()).equals(rotation, 1e-12)
 
 
-def test_wrong_sizes_raise_instead_of_crashing():
+def test_wrong_sizes_and_numbers_raise_instead_of_crashing():
     with pytest.raises(TypeError):
         semslam.SE2.exp(np.zeros(2))
     with pytest.raises(TypeError):
         semslam.SE3.exp(np.zeros(3))
+    with pytest.raises(ValueError, match="finite"):
+        semslam.SE3(np.full((4, 4), np.nan))
+    with pytest.raises(ValueError, match="finite"):
+        semslam.SO3(np.full((3, 3), np.inf))
+    with pytest.raises(ValueError, match="bottom row"):
+        semslam.SE3(np.ones((4, 4)))
+    matrix = random_se3().matrix()
+    assert semslam.SE3(matrix).equals(semslam.SE3(semslam.SO3(matrix[:3, :3]), matrix[:3, 3]), 0)
 
 
 def test_trajectory_arrays_round_trip():

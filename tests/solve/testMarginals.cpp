@@ -5,6 +5,7 @@
 #include <Eigen/LU>
 
 #include "SmallProblems.h"
+#include "semslam/solve/BatchSmoother.h"
 #include "semslam/solve/Marginals.h"
 #include "semslam/solve/NormalEquations.h"
 #include "semslam/solve/Optimizer.h"
@@ -40,4 +41,12 @@ TEST(Marginals, EqualBlocksOfTheDenseInverse) {
   }
   EXPECT_THROW(joint.block(poseKey(3), poseKey(3)), std::out_of_range);
   EXPECT_THROW(marginals.jointMarginal({poseKey(1), poseKey(1)}), std::invalid_argument);
+}
+
+TEST(Marginals, OfAnEmptyGraphAreRefusedNotACrash) {
+  // Found through the Python module: a batch smoother updated with nothing, then asked for a marginal.
+  EXPECT_THROW(Marginals(FactorGraph(), Values()), std::invalid_argument);
+  BatchSmoother smoother;
+  smoother.update();
+  EXPECT_THROW(smoother.jointMarginal({poseKey(0)}), std::invalid_argument);
 }

@@ -7,8 +7,19 @@
 
 namespace semslam {
 
+namespace {
+
+/// `graph`, which must have a factor: without one no variable has a marginal (and an empty system has no
+/// factorisation to take them from).
+const FactorGraph& nonEmpty(const FactorGraph& graph) {
+  if (graph.empty()) throw std::invalid_argument("Marginals: the graph has no factors, so no variable has a marginal");
+  return graph;
+}
+
+}  // namespace
+
 Marginals::Marginals(const FactorGraph& graph, const Values& linearizationPoint)
-    : system_(graph, linearizationPoint) {
+    : system_(nonEmpty(graph), linearizationPoint) {
   system_.assemble(linearizationPoint);
   cholesky_.analyze(system_.hessian());
   if (!cholesky_.factorize(system_.hessian())) {
