@@ -39,7 +39,8 @@ namespace {
 constexpr int kNullHypothesis = -1;
 constexpr int kNoTruth = -3;
 
-struct RunResult {
+/// semslam.RunResult (the file comment lists its members).
+struct PythonRunResult {
   std::string method;
   py::object trajectory, timestamps, landmarks, associations, hypotheses, metrics;
 };
@@ -133,9 +134,9 @@ py::dict associationArrays(const RunOutput& output) {
   return associations;
 }
 
-RunResult toPython(const MeasurementLog& log, const MethodRun& run) {
+PythonRunResult toPython(const MeasurementLog& log, const MethodRun& run) {
   const py::object loads = py::module_::import("json").attr("loads");
-  RunResult result;
+  PythonRunResult result;
   result.method = methodName(run.method);
   result.trajectory = poseArray(run.result.poses);
   Vector times(static_cast<Eigen::Index>(log.steps.size()));
@@ -158,7 +159,7 @@ RunResult toPython(const MeasurementLog& log, const MethodRun& run) {
   return result;
 }
 
-RunResult runOn(const MeasurementLog& log, const std::string& source, const std::string& method,
+PythonRunResult runOn(const MeasurementLog& log, const std::string& source, const std::string& method,
                 const py::kwargs& options) {
   const cli::RunMethodArguments arguments = parseArguments(method, options);
   MethodRun run;
@@ -178,15 +179,15 @@ void bindRun(py::module_& module) {
   module.attr("NO_TRUTH") = kNoTruth;
   module.attr("METHODS") = methodNames();
 
-  py::class_<RunResult>(module, "RunResult", "What semslam.run returns (see its documentation).")
-      .def_readonly("method", &RunResult::method)
-      .def_readonly("trajectory", &RunResult::trajectory)
-      .def_readonly("timestamps", &RunResult::timestamps)
-      .def_readonly("landmarks", &RunResult::landmarks)
-      .def_readonly("associations", &RunResult::associations)
-      .def_readonly("hypotheses", &RunResult::hypotheses)
-      .def_readonly("metrics", &RunResult::metrics)
-      .def("__repr__", [](const RunResult& r) {
+  py::class_<PythonRunResult>(module, "RunResult", "What semslam.run returns (see its documentation).")
+      .def_readonly("method", &PythonRunResult::method)
+      .def_readonly("trajectory", &PythonRunResult::trajectory)
+      .def_readonly("timestamps", &PythonRunResult::timestamps)
+      .def_readonly("landmarks", &PythonRunResult::landmarks)
+      .def_readonly("associations", &PythonRunResult::associations)
+      .def_readonly("hypotheses", &PythonRunResult::hypotheses)
+      .def_readonly("metrics", &PythonRunResult::metrics)
+      .def("__repr__", [](const PythonRunResult& r) {
         return "<semslam.RunResult " + r.method + ": " + std::to_string(py::len(r.trajectory)) + " poses>";
       });
 
