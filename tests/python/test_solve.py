@@ -174,6 +174,16 @@ def test_bad_graphs_raise_instead_of_crashing(tmp_path):
         semslam.optimize(graph, values)  # no value for x0
     with pytest.raises(IndexError):
         graph[5]
+    empty = semslam.BatchSmoother()
+    empty.update()
+    with pytest.raises(ValueError, match="no factors"):
+        empty.joint_marginal([semslam.pose_key(0)])  # was a crash
+    chain, chain_values, _, _ = odometry_chain(5)
+    for smoother in (semslam.BatchSmoother(), semslam.IncrementalSmoother()):
+        smoother.update(chain, chain_values)
+        assert smoother.joint_marginal([]).shape == (0, 0)
+        with pytest.raises(ValueError, match="repeated"):
+            smoother.joint_marginal([semslam.pose_key(1), semslam.pose_key(1)])
     (tmp_path / "bad.g2o").write_text("VERTEX_SE2 0 0 0 0\nEDGE_SE2 0 7 1 0 0 1 0 0 1 0 1\n")
     with pytest.raises(semslam.InputError) as error:
         semslam.read_pose_graph(str(tmp_path / "bad.g2o"))

@@ -6,6 +6,7 @@
 
 #include "SmallProblems.h"
 #include "semslam/solve/BatchSmoother.h"
+#include "semslam/solve/IncrementalSmoother.h"
 #include "semslam/solve/Marginals.h"
 #include "semslam/solve/NormalEquations.h"
 #include "semslam/solve/Optimizer.h"
@@ -49,4 +50,16 @@ TEST(Marginals, OfAnEmptyGraphAreRefusedNotACrash) {
   BatchSmoother smoother;
   smoother.update();
   EXPECT_THROW(smoother.jointMarginal({poseKey(0)}), std::invalid_argument);
+}
+
+TEST(Marginals, OfNoKeysAreEmptyInEverySmoother) {
+  // Found through the Python module: the batch smoother's Cholesky solve of zero columns failed, where the
+  // incremental smoother gives the 0 × 0 marginal.
+  const test::Problem problem = test::planarSlamProblem(4, 2, 3);
+  BatchSmoother batch;
+  batch.update(problem.graph, problem.initial);
+  EXPECT_EQ(batch.jointMarginal({}).covariance().size(), 0);
+  IncrementalSmoother incremental;
+  incremental.update(problem.graph, problem.initial);
+  EXPECT_EQ(incremental.jointMarginal({}).covariance().size(), 0);
 }

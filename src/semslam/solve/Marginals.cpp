@@ -44,6 +44,7 @@ JointMarginal Marginals::jointMarginal(const std::vector<Key>& keys) const {
     for (int i = 0; i < d; ++i) columns.push_back(offset + i);
   }
   const int k = static_cast<int>(columns.size());
+  if (k == 0) return JointMarginal({}, {}, Matrix(0, 0));  // no key asked for: the empty marginal, as the Bayes tree
   Matrix unit = Matrix::Zero(system_.dimension(), k);
   for (int j = 0; j < k; ++j) unit(columns[j], j) = 1.0;
   const Matrix solved = cholesky_.solve(unit);  // H⁻¹ E_S
