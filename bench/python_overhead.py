@@ -4,13 +4,14 @@ loop and solved by Gauss-Newton, against the same in C++ (bench/BuildAndSolveBas
 
 Both sides start from the same plain numbers, read from the g2o file outside the timed region, and time the same
 work: a prior on pose 0, one SE2 value per pose, one BetweenFactorSE2 per edge (its information matrix), then
-optimize() by Gauss-Newton. Each side runs once to warm up, then REPEATS times, interleaved (a C++ run in its own
-process after its own warm-up, then a Python run) so that a change in the machine's load hits both alike; the
-medians and their ratio are printed, and both final chi2 must agree (the same problem was solved). Target
-(issue 15): Python / C++ at most 1.5. `make bench` runs it.
+optimize() by Gauss-Newton. In each of ROUNDS rounds the C++ program runs REPEATS times in one process (after a
+warm-up run), then Python REPEATS times here (after a warm-up run), each run timed in its thread's CPU time; the
+medians over all runs and their ratio are printed, and both final chi2 must agree (the same problem was solved).
+Target (issue 15): Python / C++ at most 1.5. `make bench` runs it.
 
     PYTHONPATH=build-bench/python /usr/bin/python3 bench/python_overhead.py \\
-        --baseline build-bench/bin/semslam_build_solve_baseline [--data ../shared/data] [--poses 1000] [--repeats 5]
+        --baseline build-bench/bin/semslam_build_solve_baseline [--data ../shared/data] [--poses 1000] \\
+        [--repeats 5] [--rounds 3]
 """
 
 import argparse

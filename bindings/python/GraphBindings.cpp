@@ -57,6 +57,12 @@ py::object toPython(const Value& value) {
       value);
 }
 
+/// The value at `key`, as toPython gives it; a missing key raises KeyError, as a Python mapping does.
+py::object valueAt(const Values& values, Key key) {
+  if (!values.exists(key)) throw py::key_error("no variable " + keyToString(key));
+  return toPython(values.value(key));
+}
+
 /// A factor type of the library with its constructor (`init`: a py::init of Python arguments) and its accessors:
 /// noise_model(), and measured() (prior() for a prior factor).
 template <class FactorType, class Init, class... Extra>
@@ -113,9 +119,14 @@ void bindGraph(py::module_& module) {
       .def("update", [](Values& v, Key key, const SE3& x) { v.update(key, x); }, py::arg("key"), py::arg("value"))
       .def("update", [](Values& v, Key key, const Vector& point) { v.update(key, pointValue(point)); },
            py::arg("key"), py::arg("point"))
-      .def("at", [](const Values& v, Key key) { return toPython(v.value(key)); }, py::arg("key"),
-           "the value at key: SO2/SE2/SO3/SE3, or a numpy vector for a point")
-      .def("__getitem__", [](const Values& v, Key key) { return toPython(v.value(key)); })
+      .def("at", &valueAt, py::arg("key"), "the value at key: SO2/SE2/SO3/SE3, or a numpy vector for a point")
+      .def("__getitem__", &valueAt)
+      .def("__iter__", [](const Values& v) { return py::iter(py::cast(v.keys())); }, "the keys, in increasing order")
+      .def("items", [](const Values& v) {
+        py::list items;
+        for (Key key : v.keys()) items.append(py::make_tuple(key, valueAt(v, key)));
+        return items;
+      }, "(key, value) pairs, keys in increasing order")
       .def("erase", &Values::erase, py::arg("key"))
       .def("exists", &Values::exists, py::arg("key"))
       .def("__contains__", &Values::exists)

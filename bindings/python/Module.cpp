@@ -4,6 +4,7 @@
 //                                C++ message "file:line: problem", as the command-line tool prints it
 //   std::invalid_argument,
 //   std::domain_error          → ValueError (pybind11's own translation, and ours for domain_error)
+//   std::out_of_range          → IndexError (pybind11's; a missing key of Values raises KeyError)
 //   anything else std::exception → RuntimeError (pybind11's default)
 
 #include <pybind11/pybind11.h>
@@ -23,7 +24,8 @@ PYBIND11_MODULE(_semslam, module) {
 
   static py::exception<semslam::InputError> inputError(module, "InputError", PyExc_ValueError);
   inputError.attr("__module__") = "semslam";
-  py::register_exception_translator([](std::exception_ptr pointer) {
+  // Local: this module's exceptions only, whatever other pybind11 modules the process has loaded.
+  py::register_local_exception_translator([](std::exception_ptr pointer) {
     try {
       if (pointer) std::rethrow_exception(pointer);
     } catch (const semslam::InputError& error) {

@@ -51,7 +51,7 @@ void appendArgument(const CLI::App& command, const std::string& keyword, const p
   std::string flag = "--" + keyword;
   for (char& c : flag) c = c == '_' ? '-' : c;
   const CLI::Option* option = command.get_option_no_throw(flag);
-  if (option == nullptr || flag == "--method") {
+  if (option == nullptr || flag == "--method" || flag == "--help") {
     std::string accepted;
     for (const CLI::Option* known : command.get_options()) {
       if (known->get_lnames().empty()) continue;
@@ -68,12 +68,15 @@ void appendArgument(const CLI::App& command, const std::string& keyword, const p
     return;
   }
   if (py::isinstance<py::bool_>(value)) throw py::type_error(keyword + ": takes a value, not True or False");
-  argv.push_back(flag);
   if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
-    for (const py::handle item : value) argv.push_back(py::str(item).cast<std::string>());
-  } else {
-    argv.push_back(py::str(value).cast<std::string>());  // str(float) is the shortest text that reads back exactly
+    // Only an option that takes several values takes a list; each value is one `--flag=value` token, so that no
+    // value can pass for a flag of its own.
+    if (option->get_expected_max() <= 1) throw py::type_error(keyword + ": takes one value, not a list");
+    for (const py::handle item : value) argv.push_back(flag + "=" + py::str(item).cast<std::string>());
+    return;
   }
+  // str(float) is the shortest text that reads back exactly; `--flag=value` keeps a value such as "-1" a value.
+  argv.push_back(flag + "=" + py::str(value).cast<std::string>());
 }
 
 cli::RunMethodArguments parseArguments(const std::string& method, const py::kwargs& options) {
@@ -197,7 +200,7 @@ void bindRun(py::module_& module) {
         if (py::isinstance<MeasurementLog>(log)) {
           return runOn(log.cast<const MeasurementLog&>(), "measurement log (in memory)", method, options);
         }
-        const std::string path = py::str(py::module_::import("os").attr("fspath")(log)).cast<std::string>();
+        const std::string path = py::module_::import("os").attr("fsdecode")(log).cast<std::string>();
         MeasurementLog loaded;
         {
           py::gil_scoped_release release;

@@ -1,13 +1,19 @@
 // Solving: optimize() (batch Gauss-Newton or Levenberg-Marquardt), the BatchSmoother and the IncrementalSmoother
 // behind one Smoother interface (update, estimate, joint_marginal, fork, converge), and Marginals of a graph at an
-// estimate. Every call that solves releases the GIL, so other Python threads run meanwhile; the arguments are
-// C++ objects held by the caller's Python references for the duration of the call.
+// estimate.
+//
+// Threads. Every call that solves releases the GIL, so other Python threads run meanwhile. What it reads must then
+// not change under it: a graph or values passed in are copied first (a graph holds shared pointers to immutable
+// factors: the copy is cheap), and a smoother, which is not thread-safe (solve/Smoother.h), is held with a mutex
+// (SmootherHandle) that each call takes after releasing the GIL, so two threads sharing one smoother take turns.
 
 #include <pybind11/eigen.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
 #include <memory>
+#include <mutex>
+#include <utility>
 #include <vector>
 
 #include "Bindings.h"
@@ -17,6 +23,52 @@
 #include "semslam/solve/Optimizer.h"
 
 namespace semslam::python {
+namespace {
+
+/// A smoother as Python holds it: the C++ smoother and the mutex that serialises the calls of several Python
+/// threads on it (see the file comment). The subclasses only say which smoother it is, for Python's types.
+class SmootherHandle {
+ public:
+  explicit SmootherHandle(std::unique_ptr<Smoother> smoother) : smoother_(std::move(smoother)) {}
+  virtual ~SmootherHandle() = default;
+
+  /// f(smoother) with the GIL released and the smoother's mutex held.
+  template <class Function>
+  auto locked(Function&& f) {
+    py::gil_scoped_release release;
+    std::lock_guard<std::mutex> lock(mutex_);
+    return f(*smoother_);
+  }
+
+ private:
+  std::unique_ptr<Smoother> smoother_;
+  std::mutex mutex_;
+};
+
+class BatchSmootherHandle final : public SmootherHandle {
+ public:
+  using SmootherHandle::SmootherHandle;
+  explicit BatchSmootherHandle(const OptimizerParams& params)
+      : SmootherHandle(std::make_unique<BatchSmoother>(params)) {}
+};
+
+class IncrementalSmootherHandle final : public SmootherHandle {
+ public:
+  using SmootherHandle::SmootherHandle;
+  explicit IncrementalSmootherHandle(const IncrementalSmootherParams& params)
+      : SmootherHandle(std::make_unique<IncrementalSmoother>(params)) {}
+};
+
+/// A fork in a handle of its own kind.
+std::shared_ptr<SmootherHandle> forkOf(SmootherHandle& handle) {
+  std::unique_ptr<Smoother> fork = handle.locked([](Smoother& smoother) { return smoother.fork(); });
+  if (dynamic_cast<IncrementalSmoother*>(fork.get()) != nullptr) {
+    return std::make_shared<IncrementalSmootherHandle>(std::move(fork));
+  }
+  return std::make_shared<BatchSmootherHandle>(std::move(fork));
+}
+
+}  // namespace
 
 void bindSolve(py::module_& module) {
   py::enum_<SolverType>(module, "Solver")
@@ -44,9 +96,14 @@ void bindSolve(py::module_& module) {
       .def_readonly("stop_reason", &OptimizationResult::stopReason)
       .def_readonly("converged", &OptimizationResult::converged);
 
-  module.def("optimize", &optimize, py::arg("graph"), py::arg("initial"), py::arg("params") = OptimizerParams(),
-             py::call_guard<py::gil_scoped_release>(),
-             "Minimises the graph's objective from initial (Gauss-Newton by default).");
+  module.def(
+      "optimize",
+      [](FactorGraph graph, Values initial, const OptimizerParams& params) {  // copies: see the file comment
+        py::gil_scoped_release release;
+        return optimize(graph, initial, params);
+      },
+      py::arg("graph"), py::arg("initial"), py::arg("params") = OptimizerParams(),
+      "Minimises the graph's objective from initial (Gauss-Newton by default).");
 
   py::class_<IncrementalSmootherParams>(module, "IncrementalSmootherParams",
                                         "Incremental smoother settings (solve/IncrementalSmootherParams.h).")
@@ -59,43 +116,55 @@ void bindSolve(py::module_& module) {
       .def_readwrite("relaxed_clique_zeros", &IncrementalSmootherParams::relaxedCliqueZeros)
       .def_readwrite("max_switch_rounds", &IncrementalSmootherParams::maxSwitchRounds);
 
-  py::class_<Smoother, std::shared_ptr<Smoother>>(module, "Smoother",
-                                                  "A smoother: add factors and variables, re-solve, query.")
+  py::class_<SmootherHandle, std::shared_ptr<SmootherHandle>>(
+      module, "Smoother", "A smoother: add factors and variables, re-solve, query.")
       .def("update",
-           [](Smoother& smoother, const FactorGraph& factors, const Values& values,
-              const std::vector<FactorIndex>& removed) { return smoother.update(factors, values, removed); },
+           [](SmootherHandle& handle, FactorGraph factors, Values values, const std::vector<FactorIndex>& removed) {
+             return handle.locked([&](Smoother& smoother) { return smoother.update(factors, values, removed); });
+           },
            py::arg("new_factors") = FactorGraph(), py::arg("new_values") = Values(),
-           py::arg("removed") = std::vector<FactorIndex>(), py::call_guard<py::gil_scoped_release>(),
+           py::arg("removed") = std::vector<FactorIndex>(),
            "Adds factors and values for new variables, removes the factors at `removed`, re-solves; returns the "
            "indices of the new factors.")
-      .def("estimate", [](const Smoother& smoother) { return smoother.estimate(); }, "the current estimate")
+      .def("estimate",
+           [](SmootherHandle& handle) { return handle.locked([](Smoother& smoother) { return smoother.estimate(); }); },
+           "the current estimate (a copy)")
       .def("joint_marginal",
-           [](const Smoother& smoother, const std::vector<Key>& keys) {
-             return smoother.jointMarginal(keys).covariance();
+           [](SmootherHandle& handle, const std::vector<Key>& keys) {
+             return handle.locked([&](Smoother& smoother) { return smoother.jointMarginal(keys).covariance(); });
            },
-           py::arg("keys"), py::call_guard<py::gil_scoped_release>(),
+           py::arg("keys"),
            "the joint covariance of keys at the estimate, blocks in the order given (tangent, translation first)")
-      .def("marginal_covariance", &Smoother::marginalCovariance, py::arg("key"),
-           py::call_guard<py::gil_scoped_release>())
-      .def("factors", &Smoother::factors, "the current graph (removed factors left out)")
-      .def("converge", &Smoother::converge, py::call_guard<py::gil_scoped_release>(),
+      .def("marginal_covariance",
+           [](SmootherHandle& handle, Key key) {
+             return handle.locked([&](Smoother& smoother) { return smoother.marginalCovariance(key); });
+           },
+           py::arg("key"))
+      .def("factors",
+           [](SmootherHandle& handle) { return handle.locked([](Smoother& smoother) { return smoother.factors(); }); },
+           "the current graph (removed factors left out)")
+      .def("converge",
+           [](SmootherHandle& handle) { handle.locked([](Smoother& smoother) { smoother.converge(); }); },
            "iterates to the optimum of the current graph (the incremental smoother's final convergence)")
-      .def("fork", [](const Smoother& smoother) { return std::shared_ptr<Smoother>(smoother.fork()); },
-           "an independent copy (a hypothesis branch)")
-      .def("memory_bytes", &Smoother::memoryBytes);
+      .def("fork", &forkOf, "an independent copy (a hypothesis branch)")
+      .def("memory_bytes", [](SmootherHandle& handle) {
+        return handle.locked([](Smoother& smoother) { return smoother.memoryBytes(); });
+      });
 
-  py::class_<BatchSmoother, Smoother, std::shared_ptr<BatchSmoother>>(
+  py::class_<BatchSmootherHandle, SmootherHandle, std::shared_ptr<BatchSmootherHandle>>(
       module, "BatchSmoother", "Re-solves the whole graph from the last estimate at every update.")
-      .def(py::init<OptimizerParams>(), py::arg("params") = OptimizerParams());
+      .def(py::init<const OptimizerParams&>(), py::arg("params") = OptimizerParams());
 
-  py::class_<IncrementalSmoother, Smoother, std::shared_ptr<IncrementalSmoother>>(
+  py::class_<IncrementalSmootherHandle, SmootherHandle, std::shared_ptr<IncrementalSmootherHandle>>(
       module, "IncrementalSmoother", "iSAM2-class incremental smoothing on a Bayes tree (solve/IncrementalSmoother.h).")
-      .def(py::init<IncrementalSmootherParams>(), py::arg("params") = IncrementalSmootherParams())
-      .def("linearization_point", &IncrementalSmoother::linearizationPoint);
+      .def(py::init<const IncrementalSmootherParams&>(), py::arg("params") = IncrementalSmootherParams());
 
   py::class_<Marginals>(module, "Marginals", "Marginal covariances of a graph's variables at an estimate.")
-      .def(py::init<const FactorGraph&, const Values&>(), py::arg("graph"), py::arg("values"),
-           py::call_guard<py::gil_scoped_release>())
+      .def(py::init([](FactorGraph graph, Values values) {  // copies: see the file comment
+             py::gil_scoped_release release;
+             return std::make_unique<Marginals>(graph, values);
+           }),
+           py::arg("graph"), py::arg("values"))
       .def("marginal_covariance", &Marginals::marginalCovariance, py::arg("key"))
       .def("joint_marginal",
            [](const Marginals& marginals, const std::vector<Key>& keys) {

@@ -19,7 +19,7 @@ def test_plot_methods_from_a_log_and_from_run_folders(cli, tmp_path):
                      "--option", "birth=threshold", "--out", tmp_path / "from_log.png")
     assert completed.returncode == 0, completed.stderr
     assert (tmp_path / "from_log.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-    assert not any(name.endswith(".tum") for name in os.listdir(tmp_path))  # no run folder written
+    assert sorted(os.listdir(tmp_path)) == ["from_log.png", "log.jsonl"]  # nothing else written: no run folder
 
     cli("run", "--method", "mm-nh", "--in", tmp_path / "log.jsonl", "--out", tmp_path / "mm-nh", "--quiet")
     completed = plot(tmp_path / "mm-nh", "--out", tmp_path / "from_folder.png")

@@ -48,8 +48,16 @@ def test_run_equals_the_command_line_tool(cli, logs, tmp_path, log_name, method,
         rows = np.array([[float(x) for x in line.split()] for line in stream if line.strip()])
     assert result.trajectory.shape[0] == rows.shape[0] == len(result.timestamps)
     np.testing.assert_allclose(result.timestamps, rows[:, 0], rtol=1e-15)
-    np.testing.assert_allclose(result.trajectory[:, :2], rows[:, 1:3], rtol=1e-12, atol=1e-12)
-    assert result.trajectory.shape[1] == (7 if log_name == "spatial.jsonl" else 3)
+    if log_name == "spatial.jsonl":  # N x 7 rows x, y, z, qx, qy, qz, qw as TUM writes them (q up to sign)
+        assert result.trajectory.shape[1] == 7
+        np.testing.assert_allclose(result.trajectory[:, :3], rows[:, 1:4], rtol=1e-12, atol=1e-12)
+        signs = np.sign(np.sum(result.trajectory[:, 3:] * rows[:, 4:], axis=1))[:, None]
+        np.testing.assert_allclose(signs * result.trajectory[:, 3:], rows[:, 4:], atol=1e-12)
+    else:  # N x 3 rows x, y, theta; TUM holds theta as a yaw quaternion (0, 0, sin θ/2, cos θ/2)
+        assert result.trajectory.shape[1] == 3
+        np.testing.assert_allclose(result.trajectory[:, :2], rows[:, 1:3], rtol=1e-12, atol=1e-12)
+        yaw = 2 * np.arctan2(rows[:, 6], rows[:, 7])
+        np.testing.assert_allclose(np.angle(np.exp(1j * (result.trajectory[:, 2] - yaw))), 0, atol=1e-12)
     with open(tmp_path / "cli" / "associations.csv") as stream:
         associations = list(csv.DictReader(stream))
     assert len(associations) == len(result.associations["landmark"])
@@ -81,6 +89,16 @@ def test_bad_options_raise_with_the_command_line_tools_message(logs):
         semslam.run("mm-nh", log, no_covariances=1)
     with pytest.raises(ValueError, match="--seed"):
         semslam.run("hybrid", log, seed=-1)
+    with pytest.raises(TypeError, match="one value"):  # a list cannot smuggle in another flag
+        semslam.run("known", log, birth=["threshold", "--smoother", "batch"])
+    with pytest.raises(TypeError, match="unexpected keyword argument 'help'"):
+        semslam.run("known", log, help=True)
+
+
+def test_run_takes_a_bytes_or_pathlike_path(logs):
+    from_text = semslam.run("known", str(logs / "planar.jsonl"))
+    for path in (logs / "planar.jsonl", bytes(logs / "planar.jsonl")):
+        np.testing.assert_array_equal(semslam.run("known", path).trajectory, from_text.trajectory)
 
 
 def test_a_malformed_log_raises_with_its_line_number(logs, tmp_path):

@@ -158,8 +158,50 @@ def test_the_gil_is_released_during_a_solve():
         running.clear()
         thread.join()
     third = (end - start) / 3
-    assert third > 0.01, "the solve is too short to tell"
+    if third < 0.01:
+        pytest.skip(f"the solve took {end - start:.3f} s: too short on this machine to tell")
     assert any(start + third < tick < end - third for tick in ticks)
+
+
+def test_threads_sharing_one_smoother_take_turns():
+    """Four threads on one smoother, each call with the GIL released: the smoother's mutex makes them take turns
+    (before it, first-use marginals of a shared BatchSmoother crashed the interpreter within a few hundred calls)."""
+    graph, values, _, _ = odometry_chain(200)
+    keys = [semslam.pose_key(0), semslam.pose_key(100)]
+    for make in (semslam.BatchSmoother, semslam.IncrementalSmoother):
+        reference = make()
+        reference.update(graph, values)
+        expected = reference.joint_marginal(keys)
+        for _ in range(10):
+            smoother = make()
+            smoother.update(graph, values)
+            results, errors = [], []
+
+            def work():
+                try:
+                    for _ in range(10):
+                        results.append(smoother.joint_marginal(keys))
+                except Exception as error:  # noqa: BLE001 (any error fails the test below)
+                    errors.append(error)
+
+            threads = [threading.Thread(target=work) for _ in range(4)]
+            for thread in threads:
+                thread.start()
+            for thread in threads:
+                thread.join()
+            assert not errors and len(results) == 40
+            for covariance in results:
+                np.testing.assert_allclose(covariance, expected, rtol=1e-9, atol=1e-15)
+
+
+def test_values_behave_as_a_mapping():
+    values = semslam.Values()
+    values.insert(semslam.pose_key(2), semslam.SE2(1, 2, 3))
+    values.insert(3, np.array([1.0, 2.0]))
+    assert list(values) == [3, semslam.pose_key(2)]  # increasing key order
+    assert [key for key, _ in values.items()] == list(values)
+    with pytest.raises(KeyError):
+        values[semslam.pose_key(7)]
 
 
 def test_bad_graphs_raise_instead_of_crashing(tmp_path):
