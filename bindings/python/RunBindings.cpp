@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "../../apps/semslam/OptionValidators.h"
 #include "../../apps/semslam/RunOptions.h"
 #include "Bindings.h"
 #include "PoseArrays.h"
@@ -83,6 +84,7 @@ cli::RunMethodArguments parseArguments(const std::string& method, const py::kwar
   cli::RunMethodArguments arguments;
   CLI::App command("semslam.run");
   cli::addRunMethodOptions(&command, arguments);
+  cli::requireDecimalIntegers(command);  // as the tool's main() does: "0467" is 467, never octal
   std::vector<std::string> argv = {"--method", method};
   for (const auto& [key, value] : options) appendArgument(command, key.cast<std::string>(), value, argv);
   std::reverse(argv.begin(), argv.end());  // CLI11 takes a vector of arguments last first
