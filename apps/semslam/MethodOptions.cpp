@@ -37,6 +37,11 @@ void addSemanticSlamOptions(CLI::App* command, SemanticSlamOptions& options) {
                       "periods (docs/association-front-end.md §5)")
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
+  command->add_option("--confirmation-viewpoint", options.provisional.viewpointDistance,
+                      "metres the robot must have moved between two sightings that count towards confirming a "
+                      "landmark (0: any)")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
   command->add_option("--patience", options.provisional.patience,
                       "birth unassigned: steps in the sensor's field after which an unconfirmed landmark is dropped (N)")
       ->check(CLI::Range(1, 1000000))

@@ -43,6 +43,23 @@ TEST(LandmarkLifecycle, ConfirmsOnlyWithDetectionsSpacedAtLeastDeltaT) {
   EXPECT_FALSE(lifecycle.observe(j, 20.0));  // already confirmed: nothing to decide
 }
 
+TEST(LandmarkLifecycle, WithAViewpointDistanceASightingFromTheSamePlaceDoesNotCount) {
+  // An observer standing still sees another robot standing still: the same view again and again, whose errors are
+  // the same, not a second sighting of a static object (§5, --confirmation-viewpoint).
+  LandmarkLifecycle::Rule rule{2, 1.0, 10};
+  rule.viewpointDistance = 0.5;
+  LandmarkLifecycle lifecycle = withUnitSteps(rule, 5);  // Δt = 1 s
+  const int j = lifecycle.addProvisional(0.0, Vector2(1.0, 1.0));
+  EXPECT_FALSE(lifecycle.observe(j, 1.0, Vector2(1.0, 1.0)));   // spaced in time, from the same place
+  EXPECT_FALSE(lifecycle.observe(j, 5.0, Vector2(1.3, 1.3)));   // 0.42 m away: still the same view
+  EXPECT_TRUE(lifecycle.provisional(j));
+  EXPECT_TRUE(lifecycle.observe(j, 6.0, Vector2(1.0, 1.5)));    // 0.5 m from the birth's view
+  // Off (0, the default): only the time spacing counts.
+  LandmarkLifecycle timeOnly = withUnitSteps({2, 1.0, 10}, 5);
+  const int k = timeOnly.addProvisional(0.0, Vector2(1.0, 1.0));
+  EXPECT_TRUE(timeOnly.observe(k, 1.0, Vector2(1.0, 1.0)));
+}
+
 TEST(LandmarkLifecycle, ThreeConfirmationsCountFromTheLastCountedDetection) {
   LandmarkLifecycle lifecycle = withUnitSteps({3, 2.0, 10}, 3);  // Δt = 2 s
   const int j = lifecycle.addProvisional(0.0);

@@ -35,11 +35,12 @@ int LandmarkLifecycle::addConfirmed() {
   return size() - 1;
 }
 
-int LandmarkLifecycle::addProvisional(double birthTime) {
+int LandmarkLifecycle::addProvisional(double birthTime, const Vector& birthSensorPosition) {
   Entry entry;
   entry.state = State::Provisional;
   entry.counted = 1;  // the birth detection
   entry.lastCountedTime = birthTime;
+  entry.lastCountedPosition = birthSensorPosition;
   landmarks_.push_back(entry);
   if (rule_.confirmations <= 1) landmarks_.back().state = State::Confirmed;
   return size() - 1;
@@ -65,12 +66,17 @@ LandmarkLifecycle::Entry& LandmarkLifecycle::provisionalEntry(int landmark) {
   return entry;
 }
 
-bool LandmarkLifecycle::observe(int landmark, double time) {
+bool LandmarkLifecycle::observe(int landmark, double time, const Vector& sensorPosition) {
   if (!provisional(landmark)) return false;
   Entry& entry = provisionalEntry(landmark);
   // Strictly less than Δt is too soon; the tolerance absorbs timestamps that are multiples of a period in floats.
   if (time - entry.lastCountedTime < minimumSpacing() * (1.0 - 1e-9)) return false;
+  if (rule_.viewpointDistance > 0.0 && sensorPosition.size() == entry.lastCountedPosition.size() &&
+      (sensorPosition - entry.lastCountedPosition).norm() < rule_.viewpointDistance) {
+    return false;
+  }
   entry.lastCountedTime = time;
+  entry.lastCountedPosition = sensorPosition;
   if (++entry.counted < rule_.confirmations) return false;
   entry.state = State::Confirmed;
   return true;

@@ -10,7 +10,9 @@
 // A provisional landmark becomes
 //   confirmed  once M = `confirmations` detections assigned to it, its birth detection included, are each at
 //              least Δt after the previous one counted, Δt = `spacingPeriods` × the median step period seen so far
-//              (a static object is seen again later; something passing through, or a burst, is not);
+//              (a static object is seen again later; something passing through, or a burst, is not), and, where
+//              `viewpointDistance` > 0, made from a sensor position at least that far from the previous counted
+//              one's (an observer standing still sees the same view, with the same error, again);
 //   dropped    once it has been inside the sensor's field on N = `patience` steps after its birth without being
 //              confirmed (it should have been seen again);
 //   merged     into another landmark, when the caller's test (§5) says the two are one.
@@ -22,6 +24,8 @@
 // landmark's birth.
 
 #include <optional>
+
+#include "semslam/geometry/Matrix.h"
 #include <vector>
 
 namespace semslam {
@@ -31,6 +35,7 @@ struct ProvisionalLandmarkRule {
   int confirmations = 2;        ///< M
   double spacingPeriods = 3.0;  ///< Δt in median step periods
   int patience = 10;            ///< N: in-field steps without confirmation before a drop
+  double viewpointDistance = 0.0;  ///< metres the sensor must have moved since the last counted sighting (0: any)
 };
 
 class LandmarkLifecycle {
@@ -50,7 +55,7 @@ class LandmarkLifecycle {
 
   /// A new landmark; returns its index.
   int addConfirmed();
-  int addProvisional(double birthTime);
+  int addProvisional(double birthTime, const Vector& birthSensorPosition = Vector());
 
   State state(int landmark) const { return landmarks_.at(static_cast<std::size_t>(landmark)).state; }
   bool provisional(int landmark) const { return state(landmark) == State::Provisional; }
@@ -60,8 +65,9 @@ class LandmarkLifecycle {
   std::optional<int> mergedInto(int landmark) const;
   int size() const { return static_cast<int>(landmarks_.size()); }
 
-  /// A detection at `time` assigned to `landmark`. Returns true when this confirms a provisional landmark.
-  bool observe(int landmark, double time);
+  /// A detection at `time`, made from `sensorPosition`, assigned to `landmark`. Returns true when this confirms a
+  /// provisional landmark.
+  bool observe(int landmark, double time, const Vector& sensorPosition = Vector());
   /// A step after its birth at which provisional `landmark` was inside the sensor's field. Returns true when the
   /// landmark has now used up its patience unconfirmed: the caller must drop it.
   bool passedInField(int landmark);
@@ -75,6 +81,7 @@ class LandmarkLifecycle {
     State state = State::Confirmed;
     int counted = 0;             // detections counted towards M
     double lastCountedTime = 0;  // time of the last counted one
+    Vector lastCountedPosition;  // the sensor's position then
     int inFieldSteps = 0;
     int mergedInto = -1;
   };

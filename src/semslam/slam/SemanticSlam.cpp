@@ -96,7 +96,7 @@ int SemanticSlam::addLandmark(const Value& value, std::optional<int> truthId, Va
   const Key key = landmarkKey(static_cast<std::uint64_t>(index));
   landmarks_.push_back({key, ClassBelief(header_.classes), {}, std::nullopt, {}});
   if (birthTime) {
-    lifecycle_.addProvisional(*birthTime);
+    lifecycle_.addProvisional(*birthTime, sensorPosition(steps() - 1, values));
   } else {
     lifecycle_.addConfirmed();
   }
@@ -282,7 +282,7 @@ void SemanticSlam::addStep(const TimeStep& step) {
     expectationMaximization(firstRecordOfStep_[firstStep], options_.emIterations);
   }
   if (jointly) {
-    updateLifecycle(k, step.time, landmarksBeforeStep);
+    updateLifecycle(k, landmarksBeforeStep);
     while (repairExclusion(first, records_.size())) {
     }
   }
@@ -608,11 +608,21 @@ void SemanticSlam::mergeLandmark(int landmark, int into, std::vector<std::size_t
     touched.push_back(r);
   }
   landmarks_[landmark].records.clear();
-  for (int step : stepsMoved) confirmIfDue(into, stepTimes_[static_cast<std::size_t>(step)], removed);
+  for (int step : stepsMoved) confirmIfDue(into, step, removed);
 }
 
-void SemanticSlam::confirmIfDue(int landmark, double time, std::vector<FactorIndex>& removed) {
-  if (!lifecycle_.observe(landmark, time) || !landmarks_[landmark].weakPrior) return;
+Vector SemanticSlam::sensorPosition(int step, const Values& newValues) const {
+  const Key pose = poseKeys_[static_cast<std::size_t>(step)];
+  const Value& value = newValues.exists(pose) ? newValues.value(pose) : smoother_->estimate().value(pose);
+  if (const SE2* planar = std::get_if<SE2>(&value)) return planar->translation();
+  return std::get<SE3>(value).translation();
+}
+
+void SemanticSlam::confirmIfDue(int landmark, int step, std::vector<FactorIndex>& removed) {
+  if (!lifecycle_.observe(landmark, stepTimes_[static_cast<std::size_t>(step)], sensorPosition(step)) ||
+      !landmarks_[landmark].weakPrior) {
+    return;
+  }
   removed.push_back(*landmarks_[landmark].weakPrior);  // a confirmed landmark stands on its detections
   landmarks_[landmark].weakPrior.reset();
 }
@@ -723,7 +733,7 @@ void SemanticSlam::mergeDuplicateLandmarks(const std::vector<bool>& seen, std::v
   }
 }
 
-void SemanticSlam::updateLifecycle(int k, double time, int landmarksBeforeStep) {
+void SemanticSlam::updateLifecycle(int k, int landmarksBeforeStep) {
   std::vector<std::size_t> touched;
   std::vector<FactorIndex> removed;
   // Confirmations: the step's assigned detections count towards M; a confirmed landmark loses its weak prior.
@@ -732,7 +742,7 @@ void SemanticSlam::updateLifecycle(int k, double time, int landmarksBeforeStep) 
     if (!records_[r].assigned) continue;
     const int j = *records_[r].assigned;
     seen[static_cast<std::size_t>(j)] = true;
-    confirmIfDue(j, time, removed);
+    confirmIfDue(j, k, removed);
   }
   // Drops: a provisional landmark born before this step, in the field now and not seen, uses up its patience.
   const Values& estimate = smoother_->estimate();
@@ -825,7 +835,8 @@ void SemanticSlam::splitLandmarks(const std::vector<bool>& seen) {
     rebuildClassBelief(second);
     bool confirmed = false;  // the moved detections after the first count towards M, as a merge's do
     for (std::size_t i = 1; i < moved.size(); ++i) {
-      confirmed |= lifecycle_.observe(second, stepTimes_[static_cast<std::size_t>(records_[moved[i]].step)]);
+      const int step = records_[moved[i]].step;
+      confirmed |= lifecycle_.observe(second, stepTimes_[static_cast<std::size_t>(step)], sensorPosition(step));
     }
     if (!confirmed && lifecycle_.provisional(second)) heldByPrior.push_back(second);
   }

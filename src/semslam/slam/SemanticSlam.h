@@ -195,7 +195,7 @@ class SemanticSlam {
   void applyEdits(std::vector<std::size_t> touched, std::vector<FactorIndex> removed,
                   const std::vector<int>& heldByPrior = {}, const Values& newLandmarks = Values());
   /// Step 6 (§5) after step `k`'s solve: confirmations, drops of landmarks in the field, merges; one update.
-  void updateLifecycle(int k, double time, int landmarksBeforeStep);
+  void updateLifecycle(int k, int landmarksBeforeStep);
   void dropLandmark(int landmark, std::vector<std::size_t>& touched);
   void mergeLandmark(int landmark, int into, std::vector<std::size_t>& touched, std::vector<FactorIndex>& removed);
   /// Merge tests (§5, §5c) of every provisional landmark and every confirmed one `seen` at this step against the
@@ -207,8 +207,10 @@ class SemanticSlam {
   void splitLandmarks(const std::vector<bool>& seen);
   /// The class belief of `landmark` rebuilt from the records on it, as step 5 builds it.
   void rebuildClassBelief(int landmark);
-  /// A detection at `time` on `landmark` counts towards confirming it; once confirmed, its weak prior goes.
-  void confirmIfDue(int landmark, double time, std::vector<FactorIndex>& removed);
+  /// A detection of `step` on `landmark` counts towards confirming it; once confirmed, its weak prior goes.
+  void confirmIfDue(int landmark, int step, std::vector<FactorIndex>& removed);
+  /// The position of the robot at `step` (from `newValues` where the pose is not in the smoother yet).
+  Vector sensorPosition(int step, const Values& newValues = Values()) const;
   /// Removes `landmark` from the record's candidates (weight, likelihood, assignment), renormalising the rest.
   /// Returns false when it was not a candidate.
   static bool removeCandidate(DetectionRecord& record, int landmark);
