@@ -14,7 +14,8 @@
 //                 none), chi2 (NaN without a landmark)
 //   hypotheses    hybrid methods: every step's belief, the dicts of hypotheses.jsonl; None otherwise
 //   metrics       the dict of metrics.json, equal to the command's file
-// The GIL is released while the method runs.
+// The GIL is released while the method runs; after every step it is taken back to call `progress(done, total)`
+// (a keyword of run() itself, not a flag) and to let Ctrl-C or an exception from the callback stop the run.
 
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
@@ -164,13 +165,32 @@ PythonRunResult toPython(const MeasurementLog& log, const MethodRun& run) {
   return result;
 }
 
+/// The run's progress, called after every step with the GIL taken back: the caller's `progress(done, total)` where
+/// one was given, then Python's pending signals, so that Ctrl-C (KeyboardInterrupt) or an exception the callback
+/// raises stops the run at the end of the current step and propagates. `callback` is borrowed: the caller's frame
+/// holds it for the whole call (a raw pointer, because the std::function is copied without the GIL).
+RunProgress progressReporter(PyObject* callback) {
+  return [callback](int done, int total) {
+    py::gil_scoped_acquire acquire;
+    if (callback != Py_None) {
+      const py::handle function(callback);
+      function(done, total);
+    }
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+  };
+}
+
 PythonRunResult runOn(const MeasurementLog& log, const std::string& source, const std::string& method,
-                const py::kwargs& options) {
+                      const py::object& progress, const py::kwargs& options) {
   const cli::RunMethodArguments arguments = parseArguments(method, options);
+  if (!progress.is_none() && !PyCallable_Check(progress.ptr())) {
+    throw py::type_error("progress: a callable progress(done, total), or None");
+  }
+  const RunProgress reporter = progressReporter(progress.ptr());
   MethodRun run;
   {
     py::gil_scoped_release release;
-    run = cli::runFromArguments(log, arguments, source);
+    run = cli::runFromArguments(log, arguments, source, reporter);
   }
   return toPython(log, run);
 }
@@ -198,9 +218,9 @@ void bindRun(py::module_& module) {
 
   module.def(
       "run",
-      [](const std::string& method, const py::object& log, const py::kwargs& options) {
+      [](const std::string& method, const py::object& log, const py::object& progress, const py::kwargs& options) {
         if (py::isinstance<MeasurementLog>(log)) {
-          return runOn(log.cast<const MeasurementLog&>(), "measurement log (in memory)", method, options);
+          return runOn(log.cast<const MeasurementLog&>(), "measurement log (in memory)", method, progress, options);
         }
         const std::string path = py::module_::import("os").attr("fsdecode")(log).cast<std::string>();
         MeasurementLog loaded;
@@ -208,11 +228,12 @@ void bindRun(py::module_& module) {
           py::gil_scoped_release release;
           loaded = readMeasurementLog(path);
         }
-        return runOn(loaded, path, method, options);
+        return runOn(loaded, path, method, progress, options);
       },
-      py::arg("method"), py::arg("log"),
+      py::arg("method"), py::arg("log"), py::kw_only(), py::arg("progress") = py::none(),
       "Runs one method (known, ml, gpda, mm, mm-nh, hybrid, hybrid-geometric) over a measurement log (a path or "
-      "a MeasurementLog); keyword arguments are `semslam run`'s flags with _ for -.");
+      "a MeasurementLog); keyword arguments are `semslam run`'s flags with _ for -; progress(done, total), if "
+      "given, is called after every step. Ctrl-C stops the run at the end of a step (KeyboardInterrupt).");
 }
 
 }  // namespace semslam::python

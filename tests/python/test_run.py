@@ -148,3 +148,40 @@ def test_ate_and_rpe_equal_the_command_line_tool(cli, logs, tmp_path):
     result = semslam.run("mm-nh", str(logs / "planar.jsonl"))
     from_arrays = semslam.ate(semslam.Trajectory(result.timestamps, result.trajectory), reference, align="se3")
     assert from_arrays["rmse"] == pytest.approx(semslam.ate(estimate, reference, align="se3")["rmse"], rel=1e-9)
+
+
+def test_progress_is_reported_every_step_and_can_stop_the_run(logs):
+    log = str(logs / "planar.jsonl")
+    calls = []
+    semslam.run("mm-nh", log, progress=lambda done, total: calls.append((done, total)))
+    assert calls == [(k, 61) for k in range(1, 62)]
+
+    def stop_at_ten(done, total):
+        calls.append(done)
+        if done == 10:
+            raise RuntimeError("enough")
+
+    calls.clear()
+    with pytest.raises(RuntimeError, match="enough"):
+        semslam.run("mm-nh", log, progress=stop_at_ten)
+    assert calls == list(range(1, 11))  # the run stopped at the step that raised
+    with pytest.raises(TypeError, match="callable"):
+        semslam.run("mm-nh", log, progress=3)
+
+
+def test_ctrl_c_stops_a_run_at_the_end_of_a_step(logs):
+    """A pending KeyboardInterrupt is checked after every step (the GIL is released while a step runs)."""
+    import _thread
+
+    calls = []
+
+    def interrupt_at_five(done, total):
+        calls.append(done)
+        if done == 5:
+            _thread.interrupt_main()  # as Ctrl-C: Python's signal flag, seen at the next check
+
+    for method, log in (("mm-nh", logs / "planar.jsonl"), ("hybrid", logs / "aliased.jsonl")):
+        calls.clear()
+        with pytest.raises(KeyboardInterrupt):
+            semslam.run(method, str(log), progress=interrupt_at_five)
+        assert calls == [1, 2, 3, 4, 5]
