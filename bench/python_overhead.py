@@ -11,7 +11,7 @@ Target (issue 15): Python / C++ at most 1.5. `make bench` runs it.
 
     PYTHONPATH=build-bench/python /usr/bin/python3 bench/python_overhead.py \\
         --baseline build-bench/bin/semslam_build_solve_baseline [--data ../shared/data] [--poses 1000] \\
-        [--repeats 5] [--rounds 3]
+        [--repeats 5] [--rounds 3] [--per-call]
 """
 
 import argparse
@@ -67,6 +67,36 @@ def build_and_solve(vertices, edges):
     return built - start, time.thread_time() - built, result.final_chi2
 
 
+def per_call_microseconds(edges, calls=20000, blocks=5):
+    """What each call of the loop costs on its own: the best of `blocks` blocks of `calls` calls, in µs per call."""
+    information = edges[0][5]
+    noise = semslam.NoiseModel.from_information(information)
+    measured = semslam.SE2(1.0, 2.0, 0.3)
+    graph = semslam.FactorGraph()
+    factor = semslam.BetweenFactorSE2(0, 1, measured, noise)
+    values = semslam.Values()
+    keys = iter(range(10 ** 9))
+    cases = {
+        "NoiseModel.from_information(3x3)": lambda: semslam.NoiseModel.from_information(information),
+        "NoiseModel.isotropic(3, s)": lambda: semslam.NoiseModel.isotropic(3, 1.0),
+        "BetweenFactorSE2(i, j, z, noise)": lambda: semslam.BetweenFactorSE2(0, 1, measured, noise),
+        "SE2(x, y, theta)": lambda: semslam.SE2(1.0, 2.0, 0.3),
+        "FactorGraph.add(factor)": lambda: graph.add(factor),
+        "Values.insert(key, SE2)": lambda: values.insert(next(keys), measured),
+        "a bound call doing nothing (SE2.x)": measured.x,
+    }
+    costs = {}
+    for name, call in cases.items():
+        best = float("inf")
+        for _ in range(blocks):
+            start = time.thread_time()
+            for _ in range(calls):
+                call()
+            best = min(best, (time.thread_time() - start) / calls)
+        costs[name] = best * 1e6
+    return costs
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--baseline", required=True, help="the semslam_build_solve_baseline program")
@@ -74,6 +104,7 @@ def main():
     parser.add_argument("--poses", type=int, default=1000)
     parser.add_argument("--repeats", type=int, default=5, help="runs per side in each round")
     parser.add_argument("--rounds", type=int, default=3)
+    parser.add_argument("--per-call", action="store_true", help="also time each call of the loop on its own")
     arguments = parser.parse_args()
     path = os.path.join(arguments.data, MANHATTAN)
     if not os.path.exists(path):
@@ -114,6 +145,10 @@ def main():
               + ", ".join(f"{s * 1e3:.2f}" for s in times["total"]))
     ratio = median["Python"]["total"] / median["C++"]["total"]
     print(f"  Python / C++ = {ratio:.3f} (target: at most 1.5)")
+    if arguments.per_call:
+        print("  per call, best of 5 blocks of 20,000 [µs of thread CPU time]:")
+        for name, microseconds in per_call_microseconds(edges).items():
+            print(f"    {name:38}{microseconds:6.2f}")
     return 0
 
 

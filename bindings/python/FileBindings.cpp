@@ -49,12 +49,7 @@ void bindFiles(py::module_& module) {
       .def_property_readonly("dimension", [](const MeasurementLog& log) { return log.header.dimension; })
       .def_property_readonly("classes", [](const MeasurementLog& log) { return log.header.classes; })
       .def_property_readonly("source", [](const MeasurementLog& log) { return log.header.source; })
-      .def_property_readonly("timestamps",
-                             [](const MeasurementLog& log) {
-                               Vector times(static_cast<Eigen::Index>(log.steps.size()));
-                               for (std::size_t k = 0; k < log.steps.size(); ++k) times(k) = log.steps[k].time;
-                               return times;
-                             })
+      .def_property_readonly("timestamps", &stepTimes)
       .def_property_readonly("true_trajectory",
                              [](const MeasurementLog& log) -> py::object {
                                std::vector<Pose> poses;

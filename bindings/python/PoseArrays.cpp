@@ -27,6 +27,12 @@ py::array_t<double> poseArray(const std::vector<Pose>& poses) {
   return array;
 }
 
+Vector stepTimes(const MeasurementLog& log) {
+  Vector times(static_cast<Eigen::Index>(log.steps.size()));
+  for (std::size_t k = 0; k < log.steps.size(); ++k) times(static_cast<Eigen::Index>(k)) = log.steps[k].time;
+  return times;
+}
+
 py::array_t<double> xyzQuaternionArray(const std::vector<SE3>& poses) {
   py::array_t<double> array({static_cast<py::ssize_t>(poses.size()), py::ssize_t{7}});
   auto rows = array.mutable_unchecked<2>();

@@ -145,9 +145,7 @@ PythonRunResult toPython(const MeasurementLog& log, const MethodRun& run) {
   PythonRunResult result;
   result.method = methodName(run.method);
   result.trajectory = poseArray(run.result.poses);
-  Vector times(static_cast<Eigen::Index>(log.steps.size()));
-  for (std::size_t k = 0; k < log.steps.size(); ++k) times(k) = log.steps[k].time;
-  result.timestamps = py::cast(times);
+  result.timestamps = py::cast(stepTimes(log));
   result.landmarks = landmarkArrays(run.output);
   result.associations = associationArrays(run.output);
   result.metrics = loads(runMetricsToJson(run.evaluation.metrics));

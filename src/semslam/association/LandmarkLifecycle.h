@@ -24,9 +24,9 @@
 // landmark's birth.
 
 #include <optional>
+#include <vector>
 
 #include "semslam/geometry/Matrix.h"
-#include <vector>
 
 namespace semslam {
 

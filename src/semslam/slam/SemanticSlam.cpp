@@ -96,7 +96,7 @@ int SemanticSlam::addLandmark(const Value& value, std::optional<int> truthId, Va
   const Key key = landmarkKey(static_cast<std::uint64_t>(index));
   landmarks_.push_back({key, ClassBelief(header_.classes), {}, std::nullopt, {}});
   if (birthTime) {
-    lifecycle_.addProvisional(*birthTime, sensorPosition(steps() - 1, values));
+    lifecycle_.addProvisional(*birthTime, robotPosition(steps() - 1, values));
   } else {
     lifecycle_.addConfirmed();
   }
@@ -611,15 +611,14 @@ void SemanticSlam::mergeLandmark(int landmark, int into, std::vector<std::size_t
   for (int step : stepsMoved) confirmIfDue(into, step, removed);
 }
 
-Vector SemanticSlam::sensorPosition(int step, const Values& newValues) const {
+Vector SemanticSlam::robotPosition(int step, const Values& newValues) const {
   const Key pose = poseKeys_[static_cast<std::size_t>(step)];
-  const Value& value = newValues.exists(pose) ? newValues.value(pose) : smoother_->estimate().value(pose);
-  if (const SE2* planar = std::get_if<SE2>(&value)) return planar->translation();
-  return std::get<SE3>(value).translation();
+  return MeasurementFactory::positionOf(newValues.exists(pose) ? newValues.value(pose)
+                                                               : smoother_->estimate().value(pose));
 }
 
 void SemanticSlam::confirmIfDue(int landmark, int step, std::vector<FactorIndex>& removed) {
-  if (!lifecycle_.observe(landmark, stepTimes_[static_cast<std::size_t>(step)], sensorPosition(step)) ||
+  if (!lifecycle_.observe(landmark, stepTimes_[static_cast<std::size_t>(step)], robotPosition(step)) ||
       !landmarks_[landmark].weakPrior) {
     return;
   }
@@ -836,7 +835,7 @@ void SemanticSlam::splitLandmarks(const std::vector<bool>& seen) {
     bool confirmed = false;  // the moved detections after the first count towards M, as a merge's do
     for (std::size_t i = 1; i < moved.size(); ++i) {
       const int step = records_[moved[i]].step;
-      confirmed |= lifecycle_.observe(second, stepTimes_[static_cast<std::size_t>(step)], sensorPosition(step));
+      confirmed |= lifecycle_.observe(second, stepTimes_[static_cast<std::size_t>(step)], robotPosition(step));
     }
     if (!confirmed && lifecycle_.provisional(second)) heldByPrior.push_back(second);
   }

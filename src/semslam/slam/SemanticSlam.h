@@ -210,7 +210,7 @@ class SemanticSlam {
   /// A detection of `step` on `landmark` counts towards confirming it; once confirmed, its weak prior goes.
   void confirmIfDue(int landmark, int step, std::vector<FactorIndex>& removed);
   /// The position of the robot at `step` (from `newValues` where the pose is not in the smoother yet).
-  Vector sensorPosition(int step, const Values& newValues = Values()) const;
+  Vector robotPosition(int step, const Values& newValues = Values()) const;
   /// Removes `landmark` from the record's candidates (weight, likelihood, assignment), renormalising the rest.
   /// Returns false when it was not a candidate.
   static bool removeCandidate(DetectionRecord& record, int landmark);
