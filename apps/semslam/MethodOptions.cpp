@@ -28,18 +28,23 @@ void addSemanticSlamOptions(CLI::App* command, SemanticSlamOptions& options) {
                                                                            {"unassigned", BirthRule::Unassigned}}))
       ->default_str("unassigned");
   command->add_option("--confirmations", options.provisional.confirmations,
-                      "birth unassigned: detections, each 3 median step periods after the last, that confirm a "
+                      "birth unassigned: detections, each --confirmation-spacing after the last, that confirm a "
                       "provisional landmark (M)")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
-  command->add_option("--confirmation-spacing", options.provisional.spacingPeriods,
-                      "birth unassigned: the least time between two detections that count towards M, in median step "
-                      "periods (docs/association-front-end.md §5)")
+  command->add_option("--confirmation-spacing", options.provisional.spacingSeconds,
+                      "birth unassigned: the least time between two detections that count towards M, in seconds (the "
+                      "log's time unit; docs/association-front-end.md §5)")
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
   command->add_option("--confirmation-viewpoint", options.provisional.viewpointDistance,
                       "metres the robot must have moved between two sightings that count towards confirming a "
                       "landmark (0: any)")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  command->add_option("--confirmation-viewpoint-sigmas", options.provisional.viewpointSigmas,
+                      "the same in units of the sighting's position error (its error ellipse's largest sigma; 0: any; "
+                      "the larger of the two applies)")
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
   command->add_option("--patience", options.provisional.patience,

@@ -1,6 +1,7 @@
 // The M-of-N rule of provisional landmarks (docs/association-front-end.md §5).
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <stdexcept>
 
 #include "semslam/association/LandmarkLifecycle.h"
@@ -8,31 +9,8 @@
 using namespace semslam;
 using State = LandmarkLifecycle::State;
 
-namespace {
-
-/// A lifecycle that has seen steps at 0, 1, ..., steps − 1 seconds (median period 1 s).
-LandmarkLifecycle withUnitSteps(LandmarkLifecycle::Rule rule, int steps) {
-  LandmarkLifecycle lifecycle(rule);
-  for (int k = 0; k < steps; ++k) lifecycle.observeStepTime(k);
-  return lifecycle;
-}
-
-}  // namespace
-
-TEST(LandmarkLifecycle, MinimumSpacingIsPeriodsTimesTheMedianStepPeriod) {
-  LandmarkLifecycle lifecycle({2, 3.0, 10});
-  EXPECT_EQ(lifecycle.minimumSpacing(), 0.0);
-  for (double t : {0.0, 1.0, 1.5, 3.5, 4.5, 5.5}) lifecycle.observeStepTime(t);  // periods 1, .5, 2, 1, 1
-  EXPECT_DOUBLE_EQ(lifecycle.minimumSpacing(), 3.0);
-  lifecycle.observeStepTime(5.6);  // periods .1 .5 1 1 1 2: median (1 + 1) / 2
-  EXPECT_DOUBLE_EQ(lifecycle.minimumSpacing(), 3.0);
-  lifecycle.observeStepTime(5.7);  // .1 .1 .5 1 1 1 2: median 1
-  lifecycle.observeStepTime(5.8);  // .1 .1 .1 .5 1 1 1 2: median (.5 + 1) / 2
-  EXPECT_DOUBLE_EQ(lifecycle.minimumSpacing(), 2.25);
-}
-
 TEST(LandmarkLifecycle, ConfirmsOnlyWithDetectionsSpacedAtLeastDeltaT) {
-  LandmarkLifecycle lifecycle = withUnitSteps({2, 3.0, 10}, 5);  // Δt = 3 s
+  LandmarkLifecycle lifecycle = LandmarkLifecycle({2, 3.0, 10});  // Δt = 3 s
   const int j = lifecycle.addProvisional(10.0);
   EXPECT_TRUE(lifecycle.provisional(j));
   EXPECT_FALSE(lifecycle.observe(j, 11.0));  // a burst: too soon, not counted
@@ -48,20 +26,46 @@ TEST(LandmarkLifecycle, WithAViewpointDistanceASightingFromTheSamePlaceDoesNotCo
   // the same, not a second sighting of a static object (§5, --confirmation-viewpoint).
   LandmarkLifecycle::Rule rule{2, 1.0, 10};
   rule.viewpointDistance = 0.5;
-  LandmarkLifecycle lifecycle = withUnitSteps(rule, 5);  // Δt = 1 s
+  LandmarkLifecycle lifecycle = LandmarkLifecycle(rule);  // Δt = 1 s
   const int j = lifecycle.addProvisional(0.0, Vector2(1.0, 1.0));
   EXPECT_FALSE(lifecycle.observe(j, 1.0, Vector2(1.0, 1.0)));   // spaced in time, from the same place
   EXPECT_FALSE(lifecycle.observe(j, 5.0, Vector2(1.3, 1.3)));   // 0.42 m away: still the same view
   EXPECT_TRUE(lifecycle.provisional(j));
   EXPECT_TRUE(lifecycle.observe(j, 6.0, Vector2(1.0, 1.5)));    // 0.5 m from the birth's view
   // Off (0, the default): only the time spacing counts.
-  LandmarkLifecycle timeOnly = withUnitSteps({2, 1.0, 10}, 5);
+  LandmarkLifecycle timeOnly = LandmarkLifecycle({2, 1.0, 10});
   const int k = timeOnly.addProvisional(0.0, Vector2(1.0, 1.0));
   EXPECT_TRUE(timeOnly.observe(k, 1.0, Vector2(1.0, 1.0)));
 }
 
+TEST(LandmarkLifecycle, AViewpointInSigmasScalesWithTheSightingsOwnPositionError) {
+  // D = max(viewpointDistance, viewpointSigmas × σ_p): a sighting counts once the robot has moved by more than
+  // k position errors of that sighting (§5, --confirmation-viewpoint-sigmas).
+  LandmarkLifecycle::Rule rule{2, 1.0, 10};
+  rule.viewpointSigmas = 2.0;
+  LandmarkLifecycle lifecycle = LandmarkLifecycle(rule);
+  const int j = lifecycle.addProvisional(0.0, Vector2(0.0, 0.0));
+  EXPECT_FALSE(lifecycle.observe(j, 1.0, Vector2(0.3, 0.0), 0.2));  // 0.3 m < 2 × 0.2 m
+  EXPECT_TRUE(lifecycle.provisional(j));
+  EXPECT_TRUE(lifecycle.observe(j, 2.0, Vector2(0.3, 0.0), 0.1));   // the same move, a sharper sighting: 0.3 ≥ 0.2
+  // With both set, the larger distance applies.
+  rule.viewpointDistance = 0.5;
+  LandmarkLifecycle both = LandmarkLifecycle(rule);
+  const int k = both.addProvisional(0.0, Vector2(0.0, 0.0));
+  EXPECT_FALSE(both.observe(k, 1.0, Vector2(0.3, 0.0), 0.1));  // 0.3 m < max(0.5, 0.2)
+  EXPECT_FALSE(both.observe(k, 2.0, Vector2(0.6, 0.0), 0.4));  // 0.6 m < max(0.5, 0.8)
+  EXPECT_TRUE(both.observe(k, 3.0, Vector2(0.6, 0.0), 0.2));   // 0.6 m ≥ max(0.5, 0.4)
+  // Refused: a negative or non-finite distance.
+  LandmarkLifecycle::Rule negative{2, 1.0, 10};
+  negative.viewpointSigmas = -1.0;
+  EXPECT_THROW(LandmarkLifecycle{negative}, std::invalid_argument);
+  LandmarkLifecycle::Rule infinite{2, 1.0, 10};
+  infinite.viewpointDistance = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(LandmarkLifecycle{infinite}, std::invalid_argument);
+}
+
 TEST(LandmarkLifecycle, ThreeConfirmationsCountFromTheLastCountedDetection) {
-  LandmarkLifecycle lifecycle = withUnitSteps({3, 2.0, 10}, 3);  // Δt = 2 s
+  LandmarkLifecycle lifecycle = LandmarkLifecycle({3, 2.0, 10});  // Δt = 2 s
   const int j = lifecycle.addProvisional(0.0);
   EXPECT_FALSE(lifecycle.observe(j, 2.0));  // counted: 2 of 3
   EXPECT_FALSE(lifecycle.observe(j, 3.0));  // 1 s after the last counted: not counted
@@ -69,7 +73,7 @@ TEST(LandmarkLifecycle, ThreeConfirmationsCountFromTheLastCountedDetection) {
 }
 
 TEST(LandmarkLifecycle, DropsAfterPatienceInFieldSteps) {
-  LandmarkLifecycle lifecycle = withUnitSteps({2, 3.0, 4}, 3);
+  LandmarkLifecycle lifecycle = LandmarkLifecycle({2, 3.0, 4});
   const int j = lifecycle.addProvisional(0.0);
   EXPECT_FALSE(lifecycle.passedInField(j));
   EXPECT_FALSE(lifecycle.passedInField(j));
@@ -82,7 +86,7 @@ TEST(LandmarkLifecycle, DropsAfterPatienceInFieldSteps) {
 }
 
 TEST(LandmarkLifecycle, MergesFollowChains) {
-  LandmarkLifecycle lifecycle = withUnitSteps({}, 2);
+  LandmarkLifecycle lifecycle;
   const int mapped = lifecycle.addConfirmed();
   const int a = lifecycle.addProvisional(0.0);
   const int b = lifecycle.addProvisional(0.0);
@@ -97,7 +101,7 @@ TEST(LandmarkLifecycle, MergesFollowChains) {
 }
 
 TEST(LandmarkLifecycle, AConfirmedDuplicateMergesIntoAnotherConfirmedLandmark) {
-  LandmarkLifecycle lifecycle = withUnitSteps({}, 2);
+  LandmarkLifecycle lifecycle;
   const int older = lifecycle.addConfirmed();
   const int newer = lifecycle.addConfirmed();
   lifecycle.merge(newer, older);

@@ -115,7 +115,7 @@ TEST(RunCommand, MaxMixtureMethodsWriteTheRunFolderAndMetrics) {
 }
 
 TEST(RunCommand, TheConfirmationSpacingReachesTheProvisionalLandmarkRule) {
-  // A spacing no run can meet (1000 median step periods in a 30-step log) confirms nothing: finish() drops every
+  // A spacing no run can meet (1000 s in a 30-step log of 1 s steps) confirms nothing: finish() drops every
   // provisional landmark, so the map is empty; the default confirms the simulated landmarks.
   const fs::path dir = freshDirectory("semslam_run_spacing");
   const fs::path log = dir / "run.jsonl";

@@ -64,6 +64,7 @@ SemanticSlamOptions unassignedOptions(AssociationStrategy strategy) {
   SemanticSlamOptions options;
   options.strategy = strategy;
   options.birth = BirthRule::Unassigned;
+  options.provisional.spacingSeconds = 3.0;  // Δt = 3 of the corridor's 1 s steps: the tests below count in steps
   return options;
 }
 
@@ -109,7 +110,7 @@ TEST(ProvisionalLandmarks, AClutterBurstLeavesNoConfirmedLandmark) {
   for (AssociationStrategy strategy : {AssociationStrategy::MaximumLikelihood, AssociationStrategy::MaxMixture,
                                        AssociationStrategy::MaxMixtureNullHypothesis, AssociationStrategy::Gpda}) {
     SemanticSlam slam(corridor.header, unassignedOptions(strategy));
-    // Something seen twice, one period apart (less than Δt = 3 periods), at one place in the field, then never.
+    // Something seen twice, one step apart (less than Δt = 3 s), at one place in the field, then never.
     const Point2 burst(5.0, 3.0);
     for (int k = 0; k < 20; ++k) slam.addStep(corridor.step(k, k == 4 || k == 5 ? std::vector{burst} : std::vector<Point2>{}));
     slam.finish();
@@ -152,7 +153,7 @@ TEST(ProvisionalLandmarks, RealLandmarksAreConfirmedAfterTheSpacing) {
   SemanticSlam slam(corridor.header, unassignedOptions(AssociationStrategy::MaxMixtureNullHypothesis));
   for (int k = 0; k < 3; ++k) slam.addStep(corridor.step(k));
   for (int j = 0; j < 3; ++j) EXPECT_EQ(slam.lifecycle().state(j), State::Provisional);  // seen at 0, 1, 2 s
-  slam.addStep(corridor.step(3));  // 3 s after the birth: Δt = 3 median periods
+  slam.addStep(corridor.step(3));  // 3 s after the birth: Δt
   for (int j = 0; j < 3; ++j) EXPECT_EQ(slam.lifecycle().state(j), State::Confirmed);
   EXPECT_EQ(slam.landmarks(), 3);
 }

@@ -10,24 +10,14 @@ namespace semslam {
 LandmarkLifecycle::LandmarkLifecycle(Rule rule) : rule_(rule) {
   if (rule_.confirmations < 1) throw std::invalid_argument("provisional landmarks: confirmations must be >= 1");
   if (rule_.patience < 1) throw std::invalid_argument("provisional landmarks: patience must be >= 1");
-  if (!(rule_.spacingPeriods >= 0.0) || !std::isfinite(rule_.spacingPeriods)) {
+  if (!(rule_.spacingSeconds >= 0.0) || !std::isfinite(rule_.spacingSeconds)) {
     throw std::invalid_argument("provisional landmarks: spacing must be finite and >= 0");
   }
-}
-
-void LandmarkLifecycle::observeStepTime(double time) {
-  if (lastStepTime_) {
-    const double period = time - *lastStepTime_;
-    sortedPeriods_.insert(std::upper_bound(sortedPeriods_.begin(), sortedPeriods_.end(), period), period);
+  for (double viewpoint : {rule_.viewpointDistance, rule_.viewpointSigmas}) {
+    if (!(viewpoint >= 0.0) || !std::isfinite(viewpoint)) {
+      throw std::invalid_argument("provisional landmarks: viewpoint distance must be finite and >= 0");
+    }
   }
-  lastStepTime_ = time;
-}
-
-double LandmarkLifecycle::minimumSpacing() const {
-  if (sortedPeriods_.empty()) return 0.0;
-  const std::size_t n = sortedPeriods_.size();
-  const double median = n % 2 == 1 ? sortedPeriods_[n / 2] : 0.5 * (sortedPeriods_[n / 2 - 1] + sortedPeriods_[n / 2]);
-  return rule_.spacingPeriods * median;
 }
 
 int LandmarkLifecycle::addConfirmed() {
@@ -35,12 +25,12 @@ int LandmarkLifecycle::addConfirmed() {
   return size() - 1;
 }
 
-int LandmarkLifecycle::addProvisional(double birthTime, const Vector& birthSensorPosition) {
+int LandmarkLifecycle::addProvisional(double birthTime, const Vector& birthRobotPosition) {
   Entry entry;
   entry.state = State::Provisional;
   entry.counted = 1;  // the birth detection
   entry.lastCountedTime = birthTime;
-  entry.lastCountedPosition = birthSensorPosition;
+  entry.lastCountedPosition = birthRobotPosition;
   landmarks_.push_back(entry);
   if (rule_.confirmations <= 1) landmarks_.back().state = State::Confirmed;
   return size() - 1;
@@ -66,17 +56,18 @@ LandmarkLifecycle::Entry& LandmarkLifecycle::provisionalEntry(int landmark) {
   return entry;
 }
 
-bool LandmarkLifecycle::observe(int landmark, double time, const Vector& sensorPosition) {
+bool LandmarkLifecycle::observe(int landmark, double time, const Vector& robotPosition, double positionSigma) {
   if (!provisional(landmark)) return false;
   Entry& entry = provisionalEntry(landmark);
   // Strictly less than Δt is too soon; the tolerance absorbs timestamps that are multiples of a period in floats.
-  if (time - entry.lastCountedTime < minimumSpacing() * (1.0 - 1e-9)) return false;
-  if (rule_.viewpointDistance > 0.0 && sensorPosition.size() == entry.lastCountedPosition.size() &&
-      (sensorPosition - entry.lastCountedPosition).norm() < rule_.viewpointDistance) {
+  if (time - entry.lastCountedTime < rule_.spacingSeconds * (1.0 - 1e-9)) return false;
+  const double viewpoint = std::max(rule_.viewpointDistance, rule_.viewpointSigmas * positionSigma);  // D
+  if (viewpoint > 0.0 && robotPosition.size() == entry.lastCountedPosition.size() &&
+      (robotPosition - entry.lastCountedPosition).norm() < viewpoint) {
     return false;
   }
   entry.lastCountedTime = time;
-  entry.lastCountedPosition = sensorPosition;
+  entry.lastCountedPosition = robotPosition;
   if (++entry.counted < rule_.confirmations) return false;
   entry.state = State::Confirmed;
   return true;

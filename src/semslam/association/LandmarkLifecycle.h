@@ -9,10 +9,13 @@
 //                which one step cannot tell apart).
 // A provisional landmark becomes
 //   confirmed  once M = `confirmations` detections assigned to it, its birth detection included, are each at
-//              least Δt after the previous one counted, Δt = `spacingPeriods` × the median step period seen so far
-//              (a static object is seen again later; something passing through, or a burst, is not), and, where
-//              `viewpointDistance` > 0, made from a sensor position at least that far from the previous counted
-//              one's (an observer standing still sees the same view, with the same error, again);
+//              least Δt = `spacingSeconds` after the previous one counted (a static object is seen again later;
+//              something passing through, or a burst, is not; seconds, not keyframes, so that the rule means the
+//              same at every keyframe rate), and made
+//              from a robot position at least D from the previous counted one's, D = max(`viewpointDistance`,
+//              `viewpointSigmas` × σ_p), σ_p the sighting's own position error (MeasurementFactory::
+//              detectionPositionSigma): an observer standing still sees the same view, with the same error, again;
+//              one that has moved by more than the detection's error sees it from elsewhere (0 and 0: any);
 //   dropped    once it has been inside the sensor's field on N = `patience` steps after its birth without being
 //              confirmed (it should have been seen again);
 //   merged     into another landmark, when the caller's test (§5) says the two are one.
@@ -33,9 +36,10 @@ namespace semslam {
 /// The M-of-N rule's numbers (docs/association-front-end.md §5 says where they come from).
 struct ProvisionalLandmarkRule {
   int confirmations = 2;        ///< M
-  double spacingPeriods = 3.0;  ///< Δt in median step periods
+  double spacingSeconds = 1.0;  ///< Δt, in the log's time unit (seconds)
   int patience = 10;            ///< N: in-field steps without confirmation before a drop
-  double viewpointDistance = 0.0;  ///< metres the sensor must have moved since the last counted sighting (0: any)
+  double viewpointDistance = 0.0;  ///< metres the robot must have moved since the last counted sighting (0: any)
+  double viewpointSigmas = 0.0;    ///< the same in units of the sighting's position error σ_p (0: any)
 };
 
 class LandmarkLifecycle {
@@ -43,19 +47,14 @@ class LandmarkLifecycle {
   enum class State { Provisional, Confirmed, Dropped, Merged };
   using Rule = ProvisionalLandmarkRule;
 
-  /// Throws std::invalid_argument for M < 1, N < 1 or a negative or non-finite spacing.
+  /// Throws std::invalid_argument for M < 1, N < 1, or a negative or non-finite spacing or viewpoint distance.
   explicit LandmarkLifecycle(Rule rule = {});
 
   const Rule& rule() const { return rule_; }
 
-  /// Each step's time, in order (for the median step period).
-  void observeStepTime(double time);
-  /// Δt: spacingPeriods × the median of the step periods seen so far (0 before the second step).
-  double minimumSpacing() const;
-
   /// A new landmark; returns its index.
   int addConfirmed();
-  int addProvisional(double birthTime, const Vector& birthSensorPosition = Vector());
+  int addProvisional(double birthTime, const Vector& birthRobotPosition = Vector());
 
   State state(int landmark) const { return landmarks_.at(static_cast<std::size_t>(landmark)).state; }
   bool provisional(int landmark) const { return state(landmark) == State::Provisional; }
@@ -65,9 +64,9 @@ class LandmarkLifecycle {
   std::optional<int> mergedInto(int landmark) const;
   int size() const { return static_cast<int>(landmarks_.size()); }
 
-  /// A detection at `time`, made from `sensorPosition`, assigned to `landmark`. Returns true when this confirms a
-  /// provisional landmark.
-  bool observe(int landmark, double time, const Vector& sensorPosition = Vector());
+  /// A detection at `time`, made from `robotPosition`, with position error `positionSigma` (metres), assigned to
+  /// `landmark`. Returns true when this confirms a provisional landmark.
+  bool observe(int landmark, double time, const Vector& robotPosition = Vector(), double positionSigma = 0.0);
   /// A step after its birth at which provisional `landmark` was inside the sensor's field. Returns true when the
   /// landmark has now used up its patience unconfirmed: the caller must drop it.
   bool passedInField(int landmark);
@@ -81,7 +80,7 @@ class LandmarkLifecycle {
     State state = State::Confirmed;
     int counted = 0;             // detections counted towards M
     double lastCountedTime = 0;  // time of the last counted one
-    Vector lastCountedPosition;  // the sensor's position then
+    Vector lastCountedPosition;  // the robot's position then
     int inFieldSteps = 0;
     int mergedInto = -1;
   };
@@ -89,8 +88,6 @@ class LandmarkLifecycle {
 
   Rule rule_;
   std::vector<Entry> landmarks_;
-  std::vector<double> sortedPeriods_;
-  std::optional<double> lastStepTime_;
 };
 
 }  // namespace semslam

@@ -1,5 +1,10 @@
 #include "semslam/association/MeasurementFactory.h"
 
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -175,6 +180,48 @@ Value MeasurementFactory::initialLandmark(const Detection& detection, const Valu
   }
   if (landmarksHavePose_) return SE3(x.rotation(), position);
   return position;
+}
+
+namespace {
+
+/// √λmax of a symmetric positive semi-definite matrix (negative rounding clamped).
+double largestStandardDeviation(const Matrix& covariance) {
+  const Eigen::SelfAdjointEigenSolver<Matrix> solver(covariance, Eigen::EigenvaluesOnly);
+  return std::sqrt(std::max(solver.eigenvalues().maxCoeff(), 0.0));
+}
+
+/// H_l⁻¹ R H_l⁻ᵀ: the covariance of the point that a sensor model h with ∂h/∂l = H_l back-projects.
+Matrix backProjectedCovariance(const Matrix& pointJacobian, const Matrix& measurementCovariance) {
+  const Eigen::FullPivLU<Matrix> lu(pointJacobian);
+  if (!lu.isInvertible()) throw std::domain_error("detection at the sensor: its position error is undefined");
+  const Matrix inverse = lu.inverse();
+  return inverse * measurementCovariance * inverse.transpose();
+}
+
+}  // namespace
+
+double MeasurementFactory::detectionPositionSigma(const Detection& detection) const {
+  checkDetection(detection);
+  const Matrix& R = detection.covariance;
+  switch (sensor_.kind) {
+    case SensorKind::RangeBearing: {
+      const RangeBearingSensor2 sensor(std::get<SE2>(sensor_.bodyToSensor));
+      const Point2 point = sensor.backProject(SE2(), detection.geometry);
+      Matrix2 pointJacobian;
+      sensor.predict(SE2(), point, nullptr, &pointJacobian);
+      return largestStandardDeviation(backProjectedCovariance(pointJacobian, R));
+    }
+    case SensorKind::RangeBearingElevation: {
+      const RangeBearingElevationSensor3 sensor(std::get<SE3>(sensor_.bodyToSensor));
+      const Point3 point = sensor.backProject(SE3(), detection.geometry);
+      Matrix3 pointJacobian;
+      sensor.predict(SE3(), point, nullptr, &pointJacobian);
+      return largestStandardDeviation(backProjectedCovariance(pointJacobian, R));
+    }
+    case SensorKind::RelativePosition: return largestStandardDeviation(R);
+    case SensorKind::RelativePose: return largestStandardDeviation(R.topLeftCorner(dimension_, dimension_));
+  }
+  throw std::invalid_argument("unknown sensor kind");
 }
 
 Value MeasurementFactory::landmarkValue(const LandmarkState& state) const {

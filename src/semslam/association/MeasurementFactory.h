@@ -52,6 +52,12 @@ class MeasurementFactory {
   Value landmarkValue(const LandmarkState& state) const;
   /// The position part (2 or 3 numbers) of a landmark or pose value.
   static Vector positionOf(const Value& value);
+  /// The detection's position error, in metres: √λmax of the covariance of its back-projected position,
+  /// H_l⁻¹ R H_l⁻ᵀ with H_l = ∂h/∂l at that position and R the detection's covariance (the largest axis of its
+  /// error ellipse; for a range-bearing detection with uncorrelated noise, max(σ_r, r σ_θ)). The same from any robot
+  /// pose (a rotation leaves the eigenvalues alone). Relative position: √λmax(R); relative pose: of R's translation
+  /// block. Throws std::domain_error for a detection at the sensor (range 0), where H_l is singular.
+  double detectionPositionSigma(const Detection& detection) const;
   /// The position of `landmark` in the frame of the sensor mounted on `robot` (2 or 3 numbers).
   Vector positionInSensorFrame(const Value& robot, const Value& landmark) const;
 

@@ -126,7 +126,6 @@ void SemanticSlam::addStep(const TimeStep& step) {
   // 1. Propagate.
   const int k = steps();
   const Key pose = poseKey(static_cast<std::uint64_t>(k));
-  lifecycle_.observeStepTime(step.time);
   stepTimes_.push_back(step.time);
   FactorGraph propagation;
   Values newValues;
@@ -549,15 +548,21 @@ bool SemanticSlam::removeCandidate(DetectionRecord& record, int landmark) {
   return true;
 }
 
-std::vector<int> SemanticSlam::stepsOn(int landmark) const {
-  std::vector<int> steps;
+std::vector<std::size_t> SemanticSlam::recordsOn(int landmark) const {
+  std::vector<std::size_t> on;
   for (std::size_t r : landmarks_[landmark].records) {
     const DetectionRecord& record = records_[r];
     if (record.createdLandmark == landmark || record.assigned == landmark || record.knownLandmark == landmark) {
-      steps.push_back(record.step);
+      on.push_back(r);
     }
   }
-  std::sort(steps.begin(), steps.end());
+  std::sort(on.begin(), on.end());  // records are numbered in step order
+  return on;
+}
+
+std::vector<int> SemanticSlam::stepsOn(int landmark) const {
+  std::vector<int> steps;
+  for (std::size_t r : recordsOn(landmark)) steps.push_back(records_[r].step);
   return steps;
 }
 
@@ -583,7 +588,7 @@ void SemanticSlam::mergeLandmark(int landmark, int into, std::vector<std::size_t
   // stays, held by its weak prior alone.
   lifecycle_.merge(landmark, into);
   Landmark& target = landmarks_[into];
-  std::vector<int> stepsMoved = stepsOn(landmark);
+  const std::vector<std::size_t> recordsMoved = recordsOn(landmark);
   for (std::size_t r : landmarks_[landmark].records) {
     DetectionRecord& record = records_[r];
     if (record.createdLandmark == landmark) {
@@ -608,7 +613,7 @@ void SemanticSlam::mergeLandmark(int landmark, int into, std::vector<std::size_t
     touched.push_back(r);
   }
   landmarks_[landmark].records.clear();
-  for (int step : stepsMoved) confirmIfDue(into, step, removed);
+  for (std::size_t r : recordsMoved) confirmIfDue(into, r, removed);
 }
 
 Vector SemanticSlam::robotPosition(int step, const Values& newValues) const {
@@ -617,9 +622,16 @@ Vector SemanticSlam::robotPosition(int step, const Values& newValues) const {
                                                                : smoother_->estimate().value(pose));
 }
 
-void SemanticSlam::confirmIfDue(int landmark, int step, std::vector<FactorIndex>& removed) {
-  if (!lifecycle_.observe(landmark, stepTimes_[static_cast<std::size_t>(step)], robotPosition(step)) ||
-      !landmarks_[landmark].weakPrior) {
+bool SemanticSlam::countSighting(int landmark, std::size_t r) {
+  const DetectionRecord& record = records_[r];
+  const double positionSigma =
+      lifecycle_.rule().viewpointSigmas > 0.0 ? factory_.detectionPositionSigma(record.measurement) : 0.0;
+  return lifecycle_.observe(landmark, stepTimes_[static_cast<std::size_t>(record.step)], robotPosition(record.step),
+                            positionSigma);
+}
+
+void SemanticSlam::confirmIfDue(int landmark, std::size_t r, std::vector<FactorIndex>& removed) {
+  if (!countSighting(landmark, r) || !landmarks_[landmark].weakPrior) {
     return;
   }
   removed.push_back(*landmarks_[landmark].weakPrior);  // a confirmed landmark stands on its detections
@@ -741,7 +753,7 @@ void SemanticSlam::updateLifecycle(int k, int landmarksBeforeStep) {
     if (!records_[r].assigned) continue;
     const int j = *records_[r].assigned;
     seen[static_cast<std::size_t>(j)] = true;
-    confirmIfDue(j, k, removed);
+    confirmIfDue(j, r, removed);
   }
   // Drops: a provisional landmark born before this step, in the field now and not seen, uses up its patience.
   const Values& estimate = smoother_->estimate();
@@ -833,10 +845,7 @@ void SemanticSlam::splitLandmarks(const std::vector<bool>& seen) {
     rebuildClassBelief(j);
     rebuildClassBelief(second);
     bool confirmed = false;  // the moved detections after the first count towards M, as a merge's do
-    for (std::size_t i = 1; i < moved.size(); ++i) {
-      const int step = records_[moved[i]].step;
-      confirmed |= lifecycle_.observe(second, stepTimes_[static_cast<std::size_t>(step)], robotPosition(step));
-    }
+    for (std::size_t i = 1; i < moved.size(); ++i) confirmed |= countSighting(second, moved[i]);
     if (!confirmed && lifecycle_.provisional(second)) heldByPrior.push_back(second);
   }
   applyEdits(std::move(touched), {}, heldByPrior, newLandmarks);

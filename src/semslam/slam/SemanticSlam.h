@@ -207,8 +207,10 @@ class SemanticSlam {
   void splitLandmarks(const std::vector<bool>& seen);
   /// The class belief of `landmark` rebuilt from the records on it, as step 5 builds it.
   void rebuildClassBelief(int landmark);
-  /// A detection of `step` on `landmark` counts towards confirming it; once confirmed, its weak prior goes.
-  void confirmIfDue(int landmark, int step, std::vector<FactorIndex>& removed);
+  /// Whether record `r`, a sighting of provisional `landmark`, confirms it (§5: spacing in time, viewpoint).
+  bool countSighting(int landmark, std::size_t r);
+  /// Record `r`, on `landmark`, counts towards confirming it; once confirmed, its weak prior goes.
+  void confirmIfDue(int landmark, std::size_t r, std::vector<FactorIndex>& removed);
   /// The position of the robot at `step` (from `newValues` where the pose is not in the smoother yet).
   Vector robotPosition(int step, const Values& newValues = Values()) const;
   /// Removes `landmark` from the record's candidates (weight, likelihood, assignment), renormalising the rest.
@@ -216,6 +218,8 @@ class SemanticSlam {
   static bool removeCandidate(DetectionRecord& record, int landmark);
   /// Steps at which a detection was put on `landmark` (started it, assigned to it, or known to be it).
   std::vector<int> stepsOn(int landmark) const;
+  /// The records put on `landmark` (as stepsOn), in step order.
+  std::vector<std::size_t> recordsOn(int landmark) const;
   /// (§4) Records [first, end): where two mixtures of one step use one landmark at the estimate, all but the best
   /// lose that candidate; one update. Returns whether anything changed.
   bool repairExclusion(std::size_t first, std::size_t end);
