@@ -57,6 +57,9 @@ void addSemanticSlamOptions(CLI::App* command, SemanticSlamOptions& options) {
       ->capture_default_str();
   command->add_flag("--no-warm-start{false}", options.warmStart,
                     "mm, mm-nh: choose mixture components at the odometry prediction (docs/max-mixtures.md)");
+  command->add_flag("--no-null-escape{false}", options.nullEscape,
+                    "mm-nh: keep a landmark's detections on the null hypothesis even where trying them on it "
+                    "together lowers the objective (docs/association-front-end.md §6b)");
   command->add_flag("--label-split", options.labelSplit,
                     "birth unassigned: split a landmark whose labels say it holds two objects "
                     "(docs/association-front-end.md §5d)");

@@ -62,7 +62,7 @@ std::vector<AssociationRecord> hybridAssociationRecords(const MeasurementLog& lo
   for (std::size_t k = 0; k < result.associations.size(); ++k) {
     for (std::size_t i = 0; i < result.associations[k].size(); ++i) {
       records.push_back({static_cast<int>(k), static_cast<int>(i), result.associations[k][i], historyWeight,
-                         log.steps[k].detections[i].truthId});
+                         log.steps[k].detections[i].truthId, std::nullopt});  // the hybrid belief reports no chi2
     }
   }
   return records;

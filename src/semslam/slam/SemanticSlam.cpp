@@ -284,7 +284,59 @@ void SemanticSlam::addStep(const TimeStep& step) {
     updateLifecycle(k, landmarksBeforeStep);
     while (repairExclusion(first, records_.size())) {
     }
+    if (options_.strategy == AssociationStrategy::MaxMixtureNullHypothesis && options_.nullEscape) {
+      escapeNullBasins(k);
+    }
   }
+}
+
+std::vector<std::size_t> SemanticSlam::assignedRecordsOnNull(int landmark) const {
+  std::vector<std::size_t> onNull;
+  for (std::size_t r : recordsOn(landmark)) {
+    const DetectionRecord& record = records_[r];
+    if (!record.mixture || record.assigned != landmark || record.factors.size() != 1) continue;
+    const int active = record.mixture->activeComponent(smoother_->estimate());
+    if (active >= static_cast<int>(record.candidates.size())) onNull.push_back(r);  // the null component is last
+  }
+  return onNull;
+}
+
+bool SemanticSlam::escapeNullBasins(int k) {
+  std::vector<int> seen;
+  for (std::size_t r = firstRecordOfStep_[static_cast<std::size_t>(k)]; r < records_.size(); ++r) {
+    if (records_[r].assigned && lifecycle_.active(*records_[r].assigned)) seen.push_back(*records_[r].assigned);
+  }
+  std::sort(seen.begin(), seen.end());
+  seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
+  nullsTried_.resize(static_cast<std::size_t>(landmarks()), 0);
+  bool escaped = false;
+  for (int j : seen) {
+    const std::vector<std::size_t> onNull = assignedRecordsOnNull(j);
+    std::size_t& tried = nullsTried_[static_cast<std::size_t>(j)];
+    if (onNull.size() < 2 || onNull.size() <= tried) continue;  // a lone outlier, or no news since the last try
+    tried = onNull.size();
+    // The unchanged graph, converged, against the trial: the same factors, the null detections first held on the
+    // landmark, then given their mixtures back at the estimate that pulled (step 7 of the class comment).
+    std::unique_ptr<Smoother> unchanged = smoother_->fork();
+    unchanged->converge();
+    std::unique_ptr<Smoother> trial = smoother_->fork();
+    for (std::size_t r : onNull) {
+      const DetectionRecord& record = records_[r];
+      trial->replaceFactor(record.factors[0], factory_.detectionFactor(poseKeys_[static_cast<std::size_t>(record.step)],
+                                                                       landmarks_[j].key, record.measurement));
+    }
+    trial->update();
+    trial->converge();
+    for (std::size_t r : onNull) trial->replaceFactor(records_[r].factors[0], records_[r].mixture);
+    trial->update();
+    trial->converge();
+    if (trial->factors().chi2(trial->estimate()) < unchanged->factors().chi2(unchanged->estimate())) {
+      smoother_ = std::move(trial);
+      tried = 0;
+      escaped = true;
+    }
+  }
+  return escaped;
 }
 
 LinearizedLikelihood SemanticSlam::geometricLikelihood(const JointMarginal& marginal, const Landmark& landmark,

@@ -41,7 +41,15 @@
 //      prior back); the graph edits of a step are one smoother update; with labelSplit, a landmark seen at the step
 //      whose labels say it holds two objects then splits (§5d, LandmarkSplit.h; one more update). Then exclusion is
 //      repaired (§4): while two of the step's mixtures use one landmark at the estimate, the worse of them loses
-//      that component, and the step is re-solved. finish() drops what is still provisional and repairs every step.
+//      that component, and the step is re-solved. finish() drops what is still provisional and repairs every step;
+//   7. mm-nh with nullEscape (docs/association-front-end.md §6b): for each landmark seen at the step, the
+//      detections the front end put on it whose mixture sits on its null component at the estimate, if there are
+//      at least two (one is what the null hypothesis is for), are tried on the landmark together in a fork of the
+//      smoother (their plain factors, converge, the mixtures back, converge); the fork replaces the smoother when
+//      the graph's cost there, the max-mixture objective F = ½ Σ chi2 with every mixture at its own choice, is
+//      below the cost of the unchanged graph converged alike. Each acceptance lowers F: the escape only ever moves
+//      the estimate to a better optimum of paper B's own objective, out of the basin where a drifted estimate has
+//      put a landmark's re-sightings beyond the null hypothesis's break-even and nothing pulls it back.
 // Decisions where paper B is silent are in docs/max-mixtures.md.
 //
 // Invariants: landmark indices are dense, 0-based, in creation order, and are the landmark ids of every output
@@ -101,6 +109,7 @@ struct SemanticSlamOptions {
   bool candidatePreselection = true;  ///< test only: false tests every landmark (docs/association-front-end.md §7)
   bool labelSplit = false;        ///< BirthRule::Unassigned: a landmark whose labels say it holds two objects
                                   ///< splits (LandmarkSplit.h); opt-in, measured in docs/association-front-end.md §5d
+  bool nullEscape = true;         ///< mm-nh, BirthRule::Unassigned: step 7 above (docs/association-front-end.md §6b)
 };
 
 /// What became of one detection.
@@ -223,6 +232,10 @@ class SemanticSlam {
   /// (§4) Records [first, end): where two mixtures of one step use one landmark at the estimate, all but the best
   /// lose that candidate; one update. Returns whether anything changed.
   bool repairExclusion(std::size_t first, std::size_t end);
+  /// Step 7 of the class comment, for the landmarks seen at step k. Returns whether the smoother was replaced.
+  bool escapeNullBasins(int k);
+  /// The records on `landmark` that the front end assigned to it and whose mixture is on its null component.
+  std::vector<std::size_t> assignedRecordsOnNull(int landmark) const;
   FactorPtr gpdaFactor(const DetectionRecord& record, int landmark, double weight) const;
   /// E-step for one gpda record at the current estimate; returns whether any factor changed.
   bool reweight(DetectionRecord& record);
@@ -237,6 +250,7 @@ class SemanticSlam {
   bool orientationUnobservable_;  // posed landmarks, position-only sensor: every new landmark gets an orientation prior
   CandidatePreselection preselection_;  // §7 of docs/association-front-end.md
   std::unique_ptr<Smoother> smoother_;
+  std::vector<std::size_t> nullsTried_;  // per landmark: its detections on null when step 7 last failed for it
   std::vector<Key> poseKeys_;
   std::vector<Landmark> landmarks_;
   std::map<int, int> landmarkOfTruthId_;  // `known` and map priors: the log's landmark id → landmark index
