@@ -49,14 +49,14 @@ struct Outcome {
   double objective = 0.0;  // Σ chi2 of the graph at the final estimate: twice the max-mixture objective
 };
 
-Outcome run(bool nullEscape) {
+Outcome run(bool nullEscape, int steps = 7) {
   const SlippingRobot robot;
   SemanticSlamOptions options;
   options.strategy = AssociationStrategy::MaxMixtureNullHypothesis;
   options.birth = BirthRule::Unassigned;
   options.nullEscape = nullEscape;
   SemanticSlam slam(robot.header, options);
-  for (int k = 0; k < 7; ++k) slam.addStep(robot.step(k));
+  for (int k = 0; k < steps; ++k) slam.addStep(robot.step(k));
   slam.finish();
   Outcome outcome;
   for (const DetectionRecord& record : slam.detections()) {
@@ -76,6 +76,15 @@ TEST(NullEscape, PutsALandmarksResightingsBackWhereThatLowersTheObjective) {
   EXPECT_EQ(with.onLandmark, 7);
   // Each escape is accepted only where it lowers the objective, and here it does, by far.
   EXPECT_LT(with.objective, without.objective);
+}
+
+TEST(NullEscape, LeavesALoneNullDetectionToTheNullHypothesis) {
+  // One re-sighting on null is what the null hypothesis is for (an outlier): the escape needs two of one landmark.
+  const Outcome without = run(false, 2);
+  ASSERT_EQ(without.onNull, 1);
+  const Outcome with = run(true, 2);
+  EXPECT_EQ(with.onNull, 1);
+  EXPECT_DOUBLE_EQ(with.objective, without.objective);
 }
 
 }  // namespace

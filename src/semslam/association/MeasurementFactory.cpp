@@ -1,10 +1,7 @@
 #include "semslam/association/MeasurementFactory.h"
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 
-#include <algorithm>
-#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -13,6 +10,7 @@
 #include "semslam/factors/RangeBearingElevationFactor.h"
 #include "semslam/factors/RangeBearingFactor.h"
 #include "semslam/factors/RelativePointFactor.h"
+#include "semslam/geometry/CovarianceSpread.h"
 #include "semslam/graph/NoiseModel.h"
 
 namespace semslam {
@@ -183,12 +181,6 @@ Value MeasurementFactory::initialLandmark(const Detection& detection, const Valu
 }
 
 namespace {
-
-/// √λmax of a symmetric positive semi-definite matrix (negative rounding clamped).
-double largestStandardDeviation(const Matrix& covariance) {
-  const Eigen::SelfAdjointEigenSolver<Matrix> solver(covariance, Eigen::EigenvaluesOnly);
-  return std::sqrt(std::max(solver.eigenvalues().maxCoeff(), 0.0));
-}
 
 /// H_l⁻¹ R H_l⁻ᵀ: the covariance of the point that a sensor model h with ∂h/∂l = H_l back-projects.
 Matrix backProjectedCovariance(const Matrix& pointJacobian, const Matrix& measurementCovariance) {

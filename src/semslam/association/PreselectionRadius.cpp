@@ -1,21 +1,13 @@
 #include "semslam/association/PreselectionRadius.h"
 
-#include <Eigen/Eigenvalues>
-
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
+#include "semslam/geometry/CovarianceSpread.h"
+
 namespace semslam {
 namespace {
-
-/// √λmax of a symmetric positive semi-definite block (0 for an empty one; negative rounding clamped).
-double largestStandardDeviation(const Matrix& block) {
-  if (block.size() == 0) return 0.0;
-  if (!block.allFinite()) return std::numeric_limits<double>::infinity();
-  const Eigen::SelfAdjointEigenSolver<Matrix> solver(block, Eigen::EigenvaluesOnly);
-  return std::sqrt(std::max(solver.eigenvalues().maxCoeff(), 0.0));
-}
 
 /// The sensor's position in the world (2 or 3 coordinates).
 Vector sensorPosition(const Value& pose, const SensorSpec& sensor) {
