@@ -310,6 +310,7 @@ bool SemanticSlam::escapeNullBasins(int k) {
   seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
   nullsTried_.resize(static_cast<std::size_t>(landmarks()), 0);
   bool escaped = false;
+  std::optional<double> unchangedCost;  // Σ chi2 of the unchanged graph converged: the same until a try is accepted
   for (int j : seen) {
     const std::vector<std::size_t> onNull = assignedRecordsOnNull(j);
     std::size_t& tried = nullsTried_[static_cast<std::size_t>(j)];
@@ -317,8 +318,11 @@ bool SemanticSlam::escapeNullBasins(int k) {
     tried = onNull.size();
     // The unchanged graph, converged, against the trial: the same factors, the null detections first held on the
     // landmark, then given their mixtures back at the estimate that pulled (step 7 of the class comment).
-    std::unique_ptr<Smoother> unchanged = smoother_->fork();
-    unchanged->converge();
+    if (!unchangedCost) {
+      std::unique_ptr<Smoother> unchanged = smoother_->fork();
+      unchanged->converge();
+      unchangedCost = unchanged->factors().chi2(unchanged->estimate());
+    }
     std::unique_ptr<Smoother> trial = smoother_->fork();
     for (std::size_t r : onNull) {
       const DetectionRecord& record = records_[r];
@@ -330,8 +334,9 @@ bool SemanticSlam::escapeNullBasins(int k) {
     for (std::size_t r : onNull) trial->replaceFactor(records_[r].factors[0], records_[r].mixture);
     trial->update();
     trial->converge();
-    if (trial->factors().chi2(trial->estimate()) < unchanged->factors().chi2(unchanged->estimate())) {
+    if (trial->factors().chi2(trial->estimate()) < *unchangedCost) {
       smoother_ = std::move(trial);
+      unchangedCost.reset();
       tried = 0;
       escaped = true;
     }
