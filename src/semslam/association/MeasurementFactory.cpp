@@ -190,26 +190,28 @@ Matrix backProjectedCovariance(const Matrix& pointJacobian, const Matrix& measur
   return inverse * measurementCovariance * inverse.transpose();
 }
 
+/// The largest standard deviation of the point a range-bearing(-elevation) `sensor` back-projects from `geometry`
+/// with covariance R, seen from the origin: √λmax(H_l⁻¹ R H_l⁻ᵀ).
+template <typename Sensor, typename Pose, int dimension>
+double backProjectedSigma(const Sensor& sensor, const Vector& geometry, const Matrix& R) {
+  const auto point = sensor.backProject(Pose(), geometry);
+  Eigen::Matrix<double, dimension, dimension> pointJacobian;
+  sensor.predict(Pose(), point, nullptr, &pointJacobian);
+  return largestStandardDeviation(backProjectedCovariance(pointJacobian, R));
+}
+
 }  // namespace
 
 double MeasurementFactory::detectionPositionSigma(const Detection& detection) const {
   checkDetection(detection);
   const Matrix& R = detection.covariance;
   switch (sensor_.kind) {
-    case SensorKind::RangeBearing: {
-      const RangeBearingSensor2 sensor(std::get<SE2>(sensor_.bodyToSensor));
-      const Point2 point = sensor.backProject(SE2(), detection.geometry);
-      Matrix2 pointJacobian;
-      sensor.predict(SE2(), point, nullptr, &pointJacobian);
-      return largestStandardDeviation(backProjectedCovariance(pointJacobian, R));
-    }
-    case SensorKind::RangeBearingElevation: {
-      const RangeBearingElevationSensor3 sensor(std::get<SE3>(sensor_.bodyToSensor));
-      const Point3 point = sensor.backProject(SE3(), detection.geometry);
-      Matrix3 pointJacobian;
-      sensor.predict(SE3(), point, nullptr, &pointJacobian);
-      return largestStandardDeviation(backProjectedCovariance(pointJacobian, R));
-    }
+    case SensorKind::RangeBearing:
+      return backProjectedSigma<RangeBearingSensor2, SE2, 2>(
+          RangeBearingSensor2(std::get<SE2>(sensor_.bodyToSensor)), detection.geometry, R);
+    case SensorKind::RangeBearingElevation:
+      return backProjectedSigma<RangeBearingElevationSensor3, SE3, 3>(
+          RangeBearingElevationSensor3(std::get<SE3>(sensor_.bodyToSensor)), detection.geometry, R);
     case SensorKind::RelativePosition: return largestStandardDeviation(R);
     case SensorKind::RelativePose: return largestStandardDeviation(R.topLeftCorner(dimension_, dimension_));
   }
