@@ -192,7 +192,7 @@ Matrix backProjectedCovariance(const Matrix& pointJacobian, const Matrix& measur
 
 /// The largest standard deviation of the point a range-bearing(-elevation) `sensor` back-projects from `geometry`
 /// with covariance R, seen from the origin: √λmax(H_l⁻¹ R H_l⁻ᵀ).
-template <typename Sensor, typename Pose, int dimension>
+template <typename Pose, int dimension, typename Sensor>
 double backProjectedSigma(const Sensor& sensor, const Vector& geometry, const Matrix& R) {
   const auto point = sensor.backProject(Pose(), geometry);
   Eigen::Matrix<double, dimension, dimension> pointJacobian;
@@ -207,11 +207,10 @@ double MeasurementFactory::detectionPositionSigma(const Detection& detection) co
   const Matrix& R = detection.covariance;
   switch (sensor_.kind) {
     case SensorKind::RangeBearing:
-      return backProjectedSigma<RangeBearingSensor2, SE2, 2>(
-          RangeBearingSensor2(std::get<SE2>(sensor_.bodyToSensor)), detection.geometry, R);
+      return backProjectedSigma<SE2, 2>(RangeBearingSensor2(std::get<SE2>(sensor_.bodyToSensor)), detection.geometry, R);
     case SensorKind::RangeBearingElevation:
-      return backProjectedSigma<RangeBearingElevationSensor3, SE3, 3>(
-          RangeBearingElevationSensor3(std::get<SE3>(sensor_.bodyToSensor)), detection.geometry, R);
+      return backProjectedSigma<SE3, 3>(RangeBearingElevationSensor3(std::get<SE3>(sensor_.bodyToSensor)),
+                                        detection.geometry, R);
     case SensorKind::RelativePosition: return largestStandardDeviation(R);
     case SensorKind::RelativePose: return largestStandardDeviation(R.topLeftCorner(dimension_, dimension_));
   }
