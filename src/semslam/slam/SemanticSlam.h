@@ -134,6 +134,15 @@ struct DetectionRecord {
 class SemanticSlam {
  public:
   SemanticSlam(const LogHeader& header, SemanticSlamOptions options);
+  SemanticSlam(SemanticSlam&&) = default;
+  SemanticSlam& operator=(SemanticSlam&&) = default;
+  SemanticSlam& operator=(const SemanticSlam&) = delete;  // copies are made by fork() only
+
+  /// An independent copy of the whole run so far: the smoother forked (Smoother::fork, the immutable factors
+  /// shared), every other part copied. The fork and this object then evolve independently, and each, fed the same
+  /// further steps, gives bit for bit what a single run over all of them gives: a what-if branch of the run
+  /// (docs/association-front-end.md §10, two branches at an ambiguous loop closure).
+  std::unique_ptr<SemanticSlam> fork() const;
 
   /// Processes the next step of the log (steps must come in order, the first without odometry).
   void addStep(const TimeStep& step);
@@ -257,6 +266,10 @@ class SemanticSlam {
   std::vector<DetectionRecord> records_;
   std::vector<std::size_t> firstRecordOfStep_;
   std::vector<double> stepTimes_;
+
+  // For fork(): every member copied, the smoother forked. A new member must be added to its initialiser list
+  // (tests/slam/testSemanticSlamFork.cpp checks that a fork continues exactly as a single run).
+  SemanticSlam(const SemanticSlam& other);
 };
 
 }  // namespace semslam
