@@ -22,7 +22,9 @@ struct Outcome {
 Outcome outcomeOf(SemanticSlam& slam) {
   slam.finish();
   Outcome outcome;
-  for (const DetectionRecord& record : slam.detections()) outcome.associations.push_back(slam.chosenAssociation(record).first);
+  for (const DetectionRecord& record : slam.detections()) {
+    outcome.associations.push_back(slam.chosenAssociation(record).first);
+  }
   outcome.estimate = slam.smoother().estimate();
   outcome.landmarks = slam.landmarks();
   return outcome;
@@ -56,61 +58,58 @@ SemanticSlamOptions mmNullHypothesis() {
   return options;
 }
 
-TEST(SemanticSlamFork, ContinuesExactlyAsASingleRun) {
-  // The demo's loop closures, look-alikes and clutter exercise every part of the front end that a fork must copy
-  // (provisional landmarks, merges, the null escape's counters); the fork is taken mid-run, before the second lap.
-  const MeasurementLog log = simulateDemoLog(3);
-  const int steps = static_cast<int>(log.steps.size());
-  const int forkAt = steps / 2;
+/// The demo's loop closures, look-alikes and clutter exercise most of the state a fork must copy (provisional
+/// landmarks, merges, exclusion repairs, class beliefs); the fork is taken mid-run, where the second lap begins.
+struct ForkedDemo {
+  MeasurementLog log = simulateDemoLog(3);
+  int steps = static_cast<int>(log.steps.size());
+  int forkAt = steps / 2;
+  Outcome reference;  // one run over every step
+  SemanticSlam original{log.header, mmNullHypothesis()};
+  std::unique_ptr<SemanticSlam> branch;  // forked from `original` after its first forkAt steps
 
-  SemanticSlam single(log.header, mmNullHypothesis());
-  for (const TimeStep& step : log.steps) single.addStep(step);
-  const Outcome reference = outcomeOf(single);
-
-  SemanticSlam original(log.header, mmNullHypothesis());
-  for (int k = 0; k < forkAt; ++k) original.addStep(log.steps[k]);
-  const std::unique_ptr<SemanticSlam> branch = original.fork();
-  for (int k = forkAt; k < steps; ++k) {
-    original.addStep(log.steps[k]);
-    branch->addStep(log.steps[k]);
+  ForkedDemo() {
+    SemanticSlam single(log.header, mmNullHypothesis());
+    for (const TimeStep& step : log.steps) single.addStep(step);
+    reference = outcomeOf(single);
+    for (int k = 0; k < forkAt; ++k) original.addStep(log.steps[k]);
+    branch = original.fork();
   }
-  const Outcome fromOriginal = outcomeOf(original);
-  const Outcome fromBranch = outcomeOf(*branch);
+};
 
-  ASSERT_GT(reference.landmarks, 0);
+TEST(SemanticSlamFork, ContinuesExactlyAsASingleRun) {
+  ForkedDemo demo;
+  for (int k = demo.forkAt; k < demo.steps; ++k) {
+    demo.original.addStep(demo.log.steps[k]);
+    demo.branch->addStep(demo.log.steps[k]);
+  }
+  const Outcome fromOriginal = outcomeOf(demo.original);
+  const Outcome fromBranch = outcomeOf(*demo.branch);
+
+  ASSERT_GT(demo.reference.landmarks, 0);
   for (const Outcome* outcome : {&fromOriginal, &fromBranch}) {
-    EXPECT_EQ(outcome->associations, reference.associations);
-    EXPECT_EQ(outcome->landmarks, reference.landmarks);
-    expectSameEstimate(outcome->estimate, reference.estimate);
+    EXPECT_EQ(outcome->associations, demo.reference.associations);
+    EXPECT_EQ(outcome->landmarks, demo.reference.landmarks);
+    expectSameEstimate(outcome->estimate, demo.reference.estimate);
   }
 }
 
 TEST(SemanticSlamFork, IsIndependentOfTheOriginal) {
-  // The branch sees a different future (the rest of the log without its detections); the original, fed the true
-  // rest, must still give the single run's outcome, and the branch must differ from it.
-  const MeasurementLog log = simulateDemoLog(3);
-  const int steps = static_cast<int>(log.steps.size());
-  const int forkAt = steps / 2;
-
-  SemanticSlam single(log.header, mmNullHypothesis());
-  for (const TimeStep& step : log.steps) single.addStep(step);
-  const Outcome reference = outcomeOf(single);
-
-  SemanticSlam original(log.header, mmNullHypothesis());
-  for (int k = 0; k < forkAt; ++k) original.addStep(log.steps[k]);
-  const std::unique_ptr<SemanticSlam> branch = original.fork();
-  for (int k = forkAt; k < steps; ++k) {
-    TimeStep blind = log.steps[k];
+  // The branch sees a different future (the rest of the log without its detections), first; the original, fed the
+  // true rest afterwards, must still give the single run's outcome.
+  ForkedDemo demo;
+  for (int k = demo.forkAt; k < demo.steps; ++k) {
+    TimeStep blind = demo.log.steps[k];
     blind.detections.clear();
-    branch->addStep(blind);
+    demo.branch->addStep(blind);
   }
-  for (int k = forkAt; k < steps; ++k) original.addStep(log.steps[k]);
-  const Outcome fromOriginal = outcomeOf(original);
-  const Outcome fromBranch = outcomeOf(*branch);
+  for (int k = demo.forkAt; k < demo.steps; ++k) demo.original.addStep(demo.log.steps[k]);
+  const Outcome fromOriginal = outcomeOf(demo.original);
+  const Outcome fromBranch = outcomeOf(*demo.branch);
 
-  EXPECT_EQ(fromOriginal.associations, reference.associations);
-  expectSameEstimate(fromOriginal.estimate, reference.estimate);
-  EXPECT_LT(fromBranch.associations.size(), reference.associations.size());
+  EXPECT_EQ(fromOriginal.associations, demo.reference.associations);
+  expectSameEstimate(fromOriginal.estimate, demo.reference.estimate);
+  EXPECT_LT(fromBranch.associations.size(), demo.reference.associations.size());
 }
 
 }  // namespace
