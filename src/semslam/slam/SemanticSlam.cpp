@@ -122,24 +122,6 @@ void SemanticSlam::addFirstPose(FactorGraph& factors, Values& values) {
   }
 }
 
-SemanticSlam::SemanticSlam(const SemanticSlam& other)
-    : header_(other.header_),
-      options_(other.options_),
-      factory_(other.factory_),
-      gate_(other.gate_),
-      unassigned_(other.unassigned_),
-      lifecycle_(other.lifecycle_),
-      orientationUnobservable_(other.orientationUnobservable_),
-      preselection_(other.preselection_),
-      smoother_(other.smoother_->fork()),
-      nullsTried_(other.nullsTried_),
-      poseKeys_(other.poseKeys_),
-      landmarks_(other.landmarks_),
-      landmarkOfTruthId_(other.landmarkOfTruthId_),
-      records_(other.records_),
-      firstRecordOfStep_(other.firstRecordOfStep_),
-      stepTimes_(other.stepTimes_) {}
-
 std::unique_ptr<SemanticSlam> SemanticSlam::fork() const {
   return std::unique_ptr<SemanticSlam>(new SemanticSlam(*this));
 }

@@ -258,7 +258,27 @@ class SemanticSlam {
   LandmarkLifecycle lifecycle_;
   bool orientationUnobservable_;  // posed landmarks, position-only sensor: every new landmark gets an orientation prior
   CandidatePreselection preselection_;  // §7 of docs/association-front-end.md
-  std::unique_ptr<Smoother> smoother_;
+  /// Owns the smoother; a copy is a fork (Smoother::fork: the immutable factors shared), so that SemanticSlam's
+  /// own copy, which only fork() makes, is member by member.
+  class ForkingSmoother {
+   public:
+    explicit ForkingSmoother(std::unique_ptr<Smoother> smoother) : smoother_(std::move(smoother)) {}
+    ForkingSmoother(const ForkingSmoother& other) : smoother_(other.smoother_->fork()) {}
+    ForkingSmoother(ForkingSmoother&&) = default;
+    ForkingSmoother& operator=(ForkingSmoother&&) = default;
+    ForkingSmoother& operator=(const ForkingSmoother&) = delete;
+    /// Replaces the smoother (the null escape's accepted trial).
+    ForkingSmoother& operator=(std::unique_ptr<Smoother> smoother) {
+      smoother_ = std::move(smoother);
+      return *this;
+    }
+    Smoother* operator->() const { return smoother_.get(); }
+    Smoother& operator*() const { return *smoother_; }
+
+   private:
+    std::unique_ptr<Smoother> smoother_;
+  };
+  ForkingSmoother smoother_;
   std::vector<std::size_t> nullsTried_;  // per landmark: its detections on null when step 7 last failed for it
   std::vector<Key> poseKeys_;
   std::vector<Landmark> landmarks_;
@@ -267,9 +287,7 @@ class SemanticSlam {
   std::vector<std::size_t> firstRecordOfStep_;
   std::vector<double> stepTimes_;
 
-  // For fork(): every member copied, the smoother forked. A new member must be added to its initialiser list
-  // (tests/slam/testSemanticSlamFork.cpp checks that a fork continues exactly as a single run).
-  SemanticSlam(const SemanticSlam& other);
+  SemanticSlam(const SemanticSlam& other) = default;  // for fork(): every member copied, the smoother forked
 };
 
 }  // namespace semslam
