@@ -22,6 +22,7 @@ import results_association_defaults
 import results_hybrid_mrclam
 import results_hybrid_scaling
 import results_kitti_tracking
+import results_loop_closure_branches
 import results_max_mixtures
 import results_studies_mpi
 
@@ -302,7 +303,8 @@ def bounded_memory_lines(semslam, data, scratch, litw):
 
 
 SECTIONS = ["pose-graphs", "evo", "datasets", "hybrid", "hybrid-mrclam", "hybrid-scaling", "max-mixtures",
-            "robustness", "association", "association-defaults", "kitti-tracking", "studies-mpi"]
+            "robustness", "association", "association-defaults", "loop-closure-branches", "kitti-tracking",
+            "studies-mpi"]
 
 
 def section_lines(name, semslam, data, scratch):
@@ -324,6 +326,9 @@ def section_lines(name, semslam, data, scratch):
         body = results_association.association_section(semslam, data, scratch, lambda command: shown(command, data))
     elif name == "association-defaults":
         body = results_association_defaults.association_defaults_section(semslam, data, scratch)
+    elif name == "loop-closure-branches":
+        body = results_loop_closure_branches.loop_closure_branches_section(semslam, data, scratch,
+                                                                           lambda command: shown(command, data))
     elif name == "kitti-tracking":
         body = results_kitti_tracking.kitti_tracking_section(semslam, data, scratch,
                                                              lambda command: shown(command, data), sys.executable)

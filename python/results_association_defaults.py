@@ -11,9 +11,8 @@ that it means the same at both rates). Every cell comes from the run's metrics.j
 """
 import concurrent.futures
 import os
-import statistics
 
-from results_commands import read_metrics, run_checked
+from results_commands import mean_cell, read_metrics, run_checked
 from results_max_mixtures import kitti_simulation
 
 # (flag, values); the default of each is in the list, so its row is the defaults' run.
@@ -81,14 +80,6 @@ def _label(setting):
     return ", ".join(changed) if changed else "defaults (μ 1, M 2, Δt 1 s, no viewpoint rule, N 10)"
 
 
-def _mean_cell(values, digits=3):
-    present = [v for v in values if isinstance(v, (int, float))]
-    if not present:
-        return "–"
-    cell = f"{statistics.fmean(present):.{digits}f}"
-    return cell if len(present) == len(values) else f"{cell} ({len(present)})"
-
-
 def association_defaults_section(semslam, data, scratch):
     lines = ["## The unassigned rule's defaults: μ, M, Δt, the viewpoint rule and N swept on more than one log "
              "(issues 10, 11)", ""]
@@ -132,11 +123,11 @@ def association_defaults_section(semslam, data, scratch):
             cells.append(f"{m['da_accuracy_real']:.3f} / {m['ate_rmse']:.3f}")
         if mrclam:
             runs = [metrics(s, name) for name in mrclam]
-            cells.append(_mean_cell([m["da_accuracy_real"] for m in runs]) + " / " +
-                         _mean_cell([m["clutter_rejected"] for m in runs], 2))
+            cells.append(mean_cell([m["da_accuracy_real"] for m in runs]) + " / " +
+                         mean_cell([m["clutter_rejected"] for m in runs], 2))
         for _, members in groups:
             runs = [metrics(s, name) for name in members]
-            cells.append(" / ".join(_mean_cell([m.get(key) for m in runs]) for key in
+            cells.append(" / ".join(mean_cell([m.get(key) for m in runs]) for key in
                                     ("da_accuracy_real", "clutter_rejected_moving", "clutter_rejected_false_positive")))
         lines.append(f"| {_label(setting)} | " + " | ".join(cells) + " |")
     lines += ["", "```sh",

@@ -2,6 +2,7 @@
 succeed, and a run folder's metrics."""
 import json
 import os
+import statistics
 import subprocess
 import sys
 
@@ -13,6 +14,16 @@ def run_checked(command):
     if result.returncode != 0:
         sys.exit(f"make_results.py: {' '.join(command)} failed:\n{result.stdout}{result.stderr}")
     return result.stdout
+
+
+def mean_cell(values, digits=3):
+    """The mean of a table cell's numbers, `–` when none is a number, with the count in brackets when some are
+    missing (a metric undefined on some logs)."""
+    present = [v for v in values if isinstance(v, (int, float))]
+    if not present:
+        return "–"
+    cell = f"{statistics.fmean(present):.{digits}f}"
+    return cell if len(present) == len(values) else f"{cell} ({len(present)})"
 
 
 def read_metrics(folder):

@@ -63,6 +63,17 @@ void addSemanticSlamOptions(CLI::App* command, SemanticSlamOptions& options) {
   command->add_flag("--label-split", options.labelSplit,
                     "birth unassigned: split a landmark whose labels say it holds two objects "
                     "(docs/association-front-end.md §5d)");
+  command->add_option("--loop-closure-branches", options.loopClosureBranchWindow,
+                      "birth unassigned: where a step closes a loop on an uncertain estimate, keep a second branch "
+                      "without that closure for this many steps and keep the one the data favour "
+                      "(docs/association-front-end.md §10; 0: off)")
+      ->check(CLI::Range(0, 1000000))
+      ->capture_default_str();
+  command->add_option("--anchoring-information", options.anchoringInformation,
+                      "birth unassigned, with --loop-closure-branches: the information, ½ ln det(S R⁻¹) in nats, "
+                      "above which a pairing closes a loop")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
   command->add_option("--warm-start-posterior", options.warmStartMinimumPosterior,
                       "mm, mm-nh: warm-start a detection only on a candidate of at least this posterior "
                       "(0: every detection; docs/association-front-end.md)")

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "semslam/io/ScenarioFile.h"
@@ -133,6 +134,51 @@ TEST(RunCommand, TheConfirmationSpacingReachesTheProvisionalLandmarkRule) {
   EXPECT_EQ(runSemslam("run --method mm-nh --in \"" + log.string() + "\" --out \"" + (dir / "bad").string() +
                        "\" --confirmation-spacing -1").exitCode,
             2);
+  fs::remove_all(dir);
+}
+
+TEST(RunCommand, LoopClosureBranchesAreListedInBranchesCsv) {
+  // This log's first re-sightings anchor (the pose after one step of odometry is known less well than the
+  // sensor resolves): a split opens, and branches.csv lists it with the branch its score chose.
+  const fs::path dir = freshDirectory("semslam_run_branches");
+  const fs::path log = dir / "run.jsonl";
+  ASSERT_EQ(runSemslam("simulate semantic --steps 30 --seed 4 --out \"" + log.string() + "\"").exitCode, 0);
+  const fs::path out = dir / "branched";
+  const auto result = runSemslam("run --method mm-nh --loop-closure-branches 8 --in \"" + log.string() + "\" --out \"" +
+                                 out.string() + "\"");
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  std::ifstream branches(out / "branches.csv");
+  ASSERT_TRUE(branches) << "no branches.csv";
+  std::string row;
+  std::getline(branches, row);
+  EXPECT_EQ(row, "opened_at,closed_after,score_as_is,score_apart,kept");
+  int rows = 0;
+  while (std::getline(branches, row)) {
+    ++rows;
+    std::stringstream fields(row);
+    std::string openedAt, closedAfter, asIs, apart, kept;
+    std::getline(fields, openedAt, ',');
+    std::getline(fields, closedAfter, ',');
+    std::getline(fields, asIs, ',');
+    std::getline(fields, apart, ',');
+    std::getline(fields, kept);
+    EXPECT_LE(std::stoi(openedAt), std::stoi(closedAfter)) << row;
+    EXPECT_LE(std::stoi(closedAfter), std::stoi(openedAt) + 8) << row;
+    EXPECT_EQ(kept, std::stod(apart) < std::stod(asIs) ? "apart" : "as-is") << row;
+  }
+  EXPECT_GE(rows, 1);
+  // Without the option (the default), nothing branches and no branches.csv is written.
+  const fs::path single = dir / "single";
+  ASSERT_EQ(runSemslam("run --method mm-nh --in \"" + log.string() + "\" --out \"" + single.string() + "\"").exitCode, 0);
+  EXPECT_FALSE(fs::exists(single / "branches.csv"));
+  // Branches need the joint assignment, and a window of at least 0 steps.
+  for (const std::string flags : {"--method known --loop-closure-branches 8", "--method mm-nh --birth threshold "
+                                  "--loop-closure-branches 8", "--method mm-nh --loop-closure-branches -1"}) {
+    EXPECT_EQ(runSemslam("run " + flags + " --in \"" + log.string() + "\" --out \"" + (dir / "bad").string() + "\"")
+                  .exitCode,
+              2)
+        << flags;
+  }
   fs::remove_all(dir);
 }
 

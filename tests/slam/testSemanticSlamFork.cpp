@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "EstimateEquality.h"
 #include "semslam/sim/DemoScenario.h"
 #include "semslam/slam/SemanticSlam.h"
 
@@ -28,28 +29,6 @@ Outcome outcomeOf(SemanticSlam& slam) {
   outcome.estimate = slam.smoother().estimate();
   outcome.landmarks = slam.landmarks();
   return outcome;
-}
-
-/// Bit-for-bit equality of two estimates: the same keys, and each value the same type with equal stored coordinates.
-void expectSameEstimate(const Values& a, const Values& b) {
-  ASSERT_EQ(a.keys(), b.keys());
-  for (Key key : a.keys()) {
-    const Value& x = a.value(key);
-    const Value& y = b.value(key);
-    ASSERT_EQ(x.index(), y.index()) << "key " << key;
-    if (const auto* p = std::get_if<SE2>(&x)) {
-      const SE2& q = std::get<SE2>(y);
-      EXPECT_EQ(p->x(), q.x()) << "key " << key;
-      EXPECT_EQ(p->y(), q.y()) << "key " << key;
-      EXPECT_EQ(p->rotation().c(), q.rotation().c()) << "key " << key;
-      EXPECT_EQ(p->rotation().s(), q.rotation().s()) << "key " << key;
-    } else if (const auto* p = std::get_if<Point2>(&x)) {
-      EXPECT_EQ(p->x(), std::get<Point2>(y).x()) << "key " << key;
-      EXPECT_EQ(p->y(), std::get<Point2>(y).y()) << "key " << key;
-    } else {
-      ADD_FAILURE() << "the demo log holds SE2 poses and Point2 landmarks only; key " << key;
-    }
-  }
 }
 
 SemanticSlamOptions mmNullHypothesis() {

@@ -103,12 +103,17 @@ double UnassignedHypothesis::logDensity(const Detection& detection) const {
       logJacobian = 2.0 * std::log(p.range) + std::log(std::max(std::cos(p.elevation), 1e-12));
       break;
     case SensorKind::RelativePosition: break;
-    case SensorKind::RelativePose:
-      logJacobian = dimension_ == 2 ? -std::log(2.0 * std::numbers::pi)
-                                    : -std::log(8.0 * std::numbers::pi * std::numbers::pi);
-      break;
+    case SensorKind::RelativePose: break;  // a pose measures the landmark's variable itself: J = 1
   }
-  return logCartesianDensity() + logJacobian;
+  return logLandmarkDensity() + logJacobian;
+}
+
+double UnassignedHypothesis::logLandmarkDensity() const {
+  if (kind_ != SensorKind::RelativePose) return logCartesianDensity();
+  // A uniform orientation: 1 / 2π in 2D, 1 / 8π² over SO(3) (its Haar measure) in 3D.
+  const double logOrientation = dimension_ == 2 ? -std::log(2.0 * std::numbers::pi)
+                                                : -std::log(8.0 * std::numbers::pi * std::numbers::pi);
+  return logCartesianDensity() + logOrientation;
 }
 
 double switchDistanceSquared(double logDensity, int measurementDimension, double logDeterminantS,

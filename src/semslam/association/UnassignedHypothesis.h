@@ -42,6 +42,10 @@ class UnassignedHypothesis {
   /// ln ρ = ln(μ / V): the density of unassigned landmarks per m² (2D) or m³ (3D) of the world, the prior of a
   /// provisional landmark's merge test (docs/association-front-end.md §5).
   double logCartesianDensity() const;
+  /// ln of the same density over a landmark's variable as the sensor observes it: ρ, times the uniform orientation
+  /// density (1 / 2π in 2D, 1 / 8π² in 3D) when the sensor measures relative poses; the prior of an unassigned
+  /// landmark in a branch's evidence (slam/BranchScore.h).
+  double logLandmarkDensity() const;
   /// Whether a point at `position` in the sensor frame (2 or 3 numbers) lies in the field: range ≤ r_max and
   /// |bearing| ≤ Φ / 2 (and |elevation| ≤ Ψ / 2 in 3D).
   bool inField(const Vector& position) const;

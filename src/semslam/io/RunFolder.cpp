@@ -82,6 +82,15 @@ void writeRunFolder(const std::string& directory, const RunOutput& run) {
       }
     });
   }
+  if (!run.branchSplits.empty()) {
+    writeFileAtomically((folder / "branches.csv").string(), [&](std::ostream& out) {
+      out << "opened_at,closed_after,score_as_is,score_apart,kept\n";
+      for (const BranchSplitRecord& split : run.branchSplits) {
+        out << split.openedAt << "," << split.closedAfter << "," << seventeenDigitNumber(split.scoreAsIs) << ","
+            << seventeenDigitNumber(split.scoreApart) << "," << (split.keptApart ? "apart" : "as-is") << "\n";
+      }
+    });
+  }
 }
 
 }  // namespace semslam

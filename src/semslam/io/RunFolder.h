@@ -12,6 +12,10 @@
 //                          truth `not-a-landmark` for clutter, `unknown` where the dataset cannot decide, empty
 //                          where the log has no truth; chi2 = rᵀR⁻¹r of the detection against its landmark at the
 //                          final estimate, empty without a landmark)
+//   branches.csv           `opened_at,closed_after,score_as_is,score_apart,kept`: paper B with
+//                          --loop-closure-branches, one row per split (slam/LoopClosureBranches.h): the step that
+//                          opened it, the step after which it closed, the two branches' scores (−2 ln evidence,
+//                          slam/BranchScore.h) and which was kept, `as-is` or `apart`
 // metrics.json is written by io/RunMetricsFile.h. Every file is written atomically (io/AtomicFile.h); a file whose
 // data is empty (no truth, no associations) is not written.
 
@@ -34,6 +38,15 @@ struct RunLandmark {
   std::optional<Matrix> positionCovariance;
 };
 
+/// One row of branches.csv (slam/LoopClosureBranches.h, Split).
+struct BranchSplitRecord {
+  int openedAt = 0;
+  int closedAfter = 0;
+  double scoreAsIs = 0.0;   // branch A: the step as the front end decided it
+  double scoreApart = 0.0;  // branch B: the anchoring detections kept apart
+  bool keptApart = false;
+};
+
 struct RunOutput {
   int dimension = 2;
   Trajectory trajectory;
@@ -42,6 +55,7 @@ struct RunOutput {
   std::vector<RunLandmark> landmarks;
   std::vector<LandmarkTruth> landmarkTruth;
   std::vector<AssociationRecord> associations;
+  std::vector<BranchSplitRecord> branchSplits;
 };
 
 /// The SE3 form of a pose for trajectory files: SE2 (x, y, θ) becomes (x, y, 0) with a rotation θ about z.

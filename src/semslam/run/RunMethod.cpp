@@ -7,6 +7,7 @@
 #include "semslam/io/HypothesesJsonl.h"
 #include "semslam/io/RunMetricsFile.h"
 #include "semslam/io/RunOutputFromResult.h"
+#include "semslam/slam/LoopClosureBranches.h"
 
 namespace semslam {
 namespace {
@@ -23,13 +24,14 @@ void runSemanticSlam(const MeasurementLog& log, const MethodOptions& options, co
   if (options.smoother) slamOptions.smoother = smootherFactory(*options.smoother);
 
   const auto start = std::chrono::steady_clock::now();
-  SemanticSlam slam(log.header, slamOptions);
+  LoopClosureBranches branches(log.header, slamOptions);  // one branch throughout unless a window is set
   const int steps = static_cast<int>(log.steps.size());
   for (int k = 0; k < steps; ++k) {
-    slam.addStep(log.steps[k]);
+    branches.addStep(log.steps[k]);
     if (progress) progress(k + 1, steps);
   }
-  slam.finish();
+  branches.finish();
+  const SemanticSlam& slam = branches.slam();
   run.result = slam.result(options.poseCovariances);
   run.result.timeSeconds = secondsSince(start);
   run.factors = slam.smoother().factors().size();
@@ -42,6 +44,9 @@ void runSemanticSlam(const MeasurementLog& log, const MethodOptions& options, co
     associations.push_back({record.step, record.detection, landmark, weight, record.truth, slam.residualChi2(record)});
   }
   run.output = runOutputFrom(log, run.result, std::move(associations));
+  for (const LoopClosureBranches::Split& split : branches.splits()) {
+    run.output.branchSplits.push_back({split.openedAt, split.closedAfter, split.scoreA, split.scoreB, split.keptB});
+  }
 }
 
 /// Paper A: every detection of the heaviest final component's history, weighted by that history's association

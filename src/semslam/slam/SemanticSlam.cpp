@@ -127,6 +127,12 @@ std::unique_ptr<SemanticSlam> SemanticSlam::fork() const {
 }
 
 void SemanticSlam::addStep(const TimeStep& step) {
+  beginStep(step);
+  completeStep();
+}
+
+void SemanticSlam::beginStep(const TimeStep& step) {
+  if (pending_) throw std::logic_error("beginStep: the previous step was not completed");
   // 1. Propagate.
   const int k = steps();
   const Key pose = poseKey(static_cast<std::uint64_t>(k));
@@ -173,15 +179,14 @@ void SemanticSlam::addStep(const TimeStep& step) {
     marginal = smoother_->jointMarginal(keys);
     if (options_.candidatePreselection) preselection_.refresh(*marginal, considered);
   }
-  FactorGraph associations = propagation;
-  Values values = newValues;
-  const int landmarksBeforeStep = landmarks();
-  std::vector<std::size_t> factorsOfRecord;  // how many of `associations` each of this step's records added
-  std::vector<bool> warmStarted;             // whose first factor is the warm start's, to become the mixture
-  FactorGraph weakPriors;                    // of the step's provisional landmarks (§5), after every record's
-  std::vector<int> weakPriorLandmarks;
-  FactorGraph orientationPriors;             // of the step's new landmarks whose orientation is unobservable, last
-  const std::size_t first = records_.size();
+  PendingStep& pending = pending_.emplace();
+  pending.time = step.time;
+  pending.propagation = std::move(propagation);
+  pending.newValues = std::move(newValues);
+  pending.marginal = std::move(marginal);
+  pending.considered = std::move(considered);
+  pending.landmarksBeforeStep = landmarks();
+  pending.first = records_.size();
   for (std::size_t i = 0; i < step.detections.size(); ++i) {
     DetectionRecord record;
     record.step = k;
@@ -191,16 +196,41 @@ void SemanticSlam::addStep(const TimeStep& step) {
     record.semanticLikelihoods = semanticLikelihoods(header_, step.detections[i]);
     records_.push_back(std::move(record));
   }
-  const bool jointly = !known && options_.birth == BirthRule::Unassigned;
-  if (jointly) {
+  if (jointlyAssigned()) {
     // (docs/association-front-end.md, §1-4): every candidate of the step against the marginal from before it,
-    // then one joint assignment with the unassigned hypothesis.
+    // then one joint assignment with the unassigned hypothesis (applied by completeStep).
     for (const Detection& detection : step.detections) unassigned_.observe(detection);
-    for (std::size_t r = first; r < records_.size(); ++r) {
-      findCandidatesWithUnassigned(marginal ? &*marginal : nullptr, considered, records_[r]);
+    for (std::size_t r = pending.first; r < records_.size(); ++r) {
+      findCandidatesWithUnassigned(pending.marginal ? &*pending.marginal : nullptr, pending.considered, records_[r]);
     }
-    assignJointly(first);
+    pending.assignedLandmark = jointAssignment(pending.first);
   }
+}
+
+bool SemanticSlam::jointlyAssigned() const {
+  return options_.strategy != AssociationStrategy::Known && options_.birth == BirthRule::Unassigned;
+}
+
+void SemanticSlam::completeStep() {
+  if (!pending_) throw std::logic_error("completeStep: no step begun");
+  const PendingStep pending = std::move(*pending_);
+  pending_.reset();
+  const int k = steps() - 1;
+  const Key pose = poseKeys_.back();
+  const bool known = options_.strategy == AssociationStrategy::Known;
+  const bool jointly = jointlyAssigned();
+  const std::optional<JointMarginal>& marginal = pending.marginal;
+  const std::vector<int>& considered = pending.considered;
+  const std::size_t first = pending.first;
+  const int landmarksBeforeStep = pending.landmarksBeforeStep;
+  if (jointly) applyJointAssignment(first, pending.assignedLandmark);
+  FactorGraph associations = pending.propagation;
+  Values values = pending.newValues;
+  std::vector<std::size_t> factorsOfRecord;  // how many of `associations` each of this step's records added
+  std::vector<bool> warmStarted;             // whose first factor is the warm start's, to become the mixture
+  FactorGraph weakPriors;                    // of the step's provisional landmarks (§5), after every record's
+  std::vector<int> weakPriorLandmarks;
+  FactorGraph orientationPriors;             // of the step's new landmarks whose orientation is unobservable, last
   for (std::size_t r = first; r < records_.size(); ++r) {
     DetectionRecord& record = records_[r];
     const std::size_t factorsBefore = associations.size();
@@ -225,7 +255,7 @@ void SemanticSlam::addStep(const TimeStep& step) {
       if (!jointly && marginal) findCandidates(*marginal, considered, record);
       if (record.candidates.empty()) {
         // Under BirthRule::Unassigned the new landmark is provisional, held by a weak prior (§5).
-        const std::optional<double> birthTime = jointly ? std::optional<double>(step.time) : std::nullopt;
+        const std::optional<double> birthTime = jointly ? std::optional<double>(pending.time) : std::nullopt;
         const Value initial = factory_.initialLandmark(record.measurement, robot);
         const int index = addLandmark(initial, std::nullopt, values, birthTime);
         record.createdLandmark = index;
@@ -261,12 +291,20 @@ void SemanticSlam::addStep(const TimeStep& step) {
     factorsOfRecord.push_back(associations.size() - factorsBefore);
   }
   warmStarted.resize(records_.size() - first, false);
+  for (std::size_t r : pending.keptApart) {  // (§10) an object not mapped before: never merged with one that was
+    const int born = records_[r].createdLandmark.value();
+    for (int j = 0; j < landmarksBeforeStep; ++j) {
+      if (!lifecycle_.active(j)) continue;
+      landmarks_[static_cast<std::size_t>(born)].distinctFrom.push_back(j);
+      landmarks_[static_cast<std::size_t>(j)].distinctFrom.push_back(born);
+    }
+  }
   for (const FactorPtr& prior : weakPriors) associations.add(prior);
   for (const FactorPtr& prior : orientationPriors) associations.add(prior);
 
   // 4. Solve, and remember which smoother factors belong to which detection (they follow any propagation ones).
   const std::vector<FactorIndex> indices = smoother_->update(associations, values);
-  std::size_t next = propagation.size();
+  std::size_t next = pending.propagation.size();
   for (std::size_t i = 0; i < factorsOfRecord.size(); ++i) {
     DetectionRecord& record = records_[firstRecordOfStep_.back() + i];
     for (std::size_t c = 0; c < factorsOfRecord[i]; ++c) record.factors.push_back(indices.at(next++));
@@ -393,7 +431,7 @@ void SemanticSlam::findCandidatesWithUnassigned(const JointMarginal* marginal, c
   if (!record.candidates.empty()) record.weights = normalizeLogWeights(record.logLikelihoods);
 }
 
-void SemanticSlam::assignJointly(std::size_t first) {
+std::vector<int> SemanticSlam::jointAssignment(std::size_t first) const {
   // (§4) Rows: the step's detections. Columns: every landmark some detection gated, then one unassigned column per
   // detection, open to that detection only. Weights: log-likelihoods; the maximum-weight assignment is the most
   // likely joint association with at most one detection per landmark.
@@ -424,6 +462,44 @@ void SemanticSlam::assignJointly(std::size_t first) {
     const int column = assignment.rowToColumn[i];
     if (column >= 0 && column < landmarkColumns) assignedLandmark[i] = columnLandmark[column];
   }
+  return assignedLandmark;
+}
+
+std::vector<std::size_t> SemanticSlam::anchoringDetections() const {
+  if (!pending_) throw std::logic_error("anchoringDetections: no step begun");
+  std::vector<std::size_t> anchoring;
+  if (!pending_->marginal) return anchoring;  // no landmark to pair with
+  for (std::size_t i = 0; i < pending_->assignedLandmark.size(); ++i) {
+    const int landmark = pending_->assignedLandmark[i];
+    if (landmark < 0) continue;
+    const std::size_t r = pending_->first + i;
+    const Detection& detection = records_[r].measurement;
+    // ln N(z; ẑ, S) = −½ d² − ½ m ln 2π − ½ ln det S and the detection's logNormalizer n_R = ½ m ln 2π + ½ ln det R,
+    // so I = ½ ln det(S R⁻¹) = −(ln N + ½ d² + n_R) (docs/association-front-end.md §10).
+    const LinearizedLikelihood geometric = geometricLikelihood(*pending_->marginal, landmarks_[landmark], detection);
+    const double logNormalizer =
+        factory_.detectionFactor(poseKeys_.back(), landmarks_[landmark].key, detection)->logNormalizer().value();
+    const double information = -(geometric.logLikelihood + 0.5 * geometric.innovationChi2 + logNormalizer);
+    if (information > options_.anchoringInformation) anchoring.push_back(r);
+  }
+  return anchoring;
+}
+
+void SemanticSlam::keepApart(const std::vector<std::size_t>& records) {
+  if (!pending_) throw std::logic_error("keepApart: no step begun");
+  for (std::size_t r : records) {
+    if (r < pending_->first || r - pending_->first >= pending_->assignedLandmark.size()) {
+      throw std::invalid_argument("keepApart: record " + std::to_string(r) + " is not of the begun step");
+    }
+    int& landmark = pending_->assignedLandmark[r - pending_->first];
+    if (landmark < 0) continue;
+    pending_->keptApart.push_back(r);
+    landmark = -1;
+  }
+}
+
+void SemanticSlam::applyJointAssignment(std::size_t first, const std::vector<int>& assignedLandmark) {
+  const std::size_t rows = records_.size() - first;
   // Exclusion: a detection's remaining candidates are those no other detection of the step was assigned.
   for (std::size_t i = 0; i < rows; ++i) {
     DetectionRecord& record = records_[first + i];
@@ -584,6 +660,11 @@ FactorPtr SemanticSlam::landmarkPrior(int landmark, const Value& value, double p
   variances.head(std::min(position, dimension)).setConstant(positionSigma * positionSigma);
   return factory_.landmarkPriorFactor(landmarks_[landmark].key,
                                       LandmarkPrior{-1, toLandmarkState(value), Matrix(variances.asDiagonal())});
+}
+
+std::optional<double> SemanticSlam::orientationPriorPositionScore() const {
+  if (!orientationUnobservable_) return std::nullopt;
+  return factory_.dimension() * std::log(2.0 * std::numbers::pi * kUnconstrainedSigma * kUnconstrainedSigma);
 }
 
 double SemanticSlam::bestPosterior(const DetectionRecord& record) {
@@ -963,19 +1044,32 @@ void SemanticSlam::finish() {
 }
 
 std::pair<std::optional<int>, double> SemanticSlam::chosenAssociation(const DetectionRecord& record) const {
+  return chosenAssociation(record, smoother_->estimate());
+}
+
+std::pair<std::optional<int>, double> SemanticSlam::chosenAssociation(const DetectionRecord& record,
+                                                                      const Values& estimate) const {
   if (record.knownLandmark) return {*record.knownLandmark, 1.0};
   if (record.createdLandmark) return {*record.createdLandmark, 1.0};
   if (record.rejected) return {std::nullopt, 1.0};  // its provisional landmark was dropped (§5)
   if (record.candidates.empty()) return {std::nullopt, 1.0};  // `known`: clutter, no factor
   if (record.mixture) {
     const auto& mixture = static_cast<const MaxMixtureFactor&>(*record.mixture);
-    const int active = mixture.activeComponent(smoother_->estimate());
+    const int active = mixture.activeComponent(estimate);
     if (active >= static_cast<int>(record.candidates.size())) return {std::nullopt, options_.nullWeight};
     const double scale = options_.strategy == AssociationStrategy::MaxMixtureNullHypothesis ? 1.0 - options_.nullWeight : 1.0;
     return {record.candidates[active], record.weights[active] * scale};
   }
   const int best = argmax(record.weights);  // ml: the one candidate left; gpda: the most probable after its EM
   return {record.candidates[best], record.weights[best]};
+}
+
+std::vector<FactorIndex> SemanticSlam::weakPriors() const {
+  std::vector<FactorIndex> priors;
+  for (const Landmark& landmark : landmarks_) {
+    if (landmark.weakPrior) priors.push_back(*landmark.weakPrior);
+  }
+  return priors;
 }
 
 std::optional<double> SemanticSlam::residualChi2(const DetectionRecord& record) const {

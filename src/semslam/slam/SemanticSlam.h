@@ -52,6 +52,11 @@
 //      put a landmark's re-sightings beyond the null hypothesis's break-even and nothing pulls it back.
 // Decisions where paper B is silent are in docs/max-mixtures.md.
 //
+// A step is processed in two halves, beginStep (steps 1-2, the joint assignment found but not applied) and
+// completeStep (the rest), so that a run can be forked between them with a different decision on the step's
+// anchoring pairings (keepApart): LoopClosureBranches.h keeps two such branches and the one the data favour
+// (docs/association-front-end.md §10). addStep is the two halves in one.
+//
 // Invariants: landmark indices are dense, 0-based, in creation order, and are the landmark ids of every output
 // (a dropped or merged landmark keeps its index and its variable, held by its weak prior, but leaves the map and
 // every candidate list); every detection of every step processed has exactly one DetectionRecord; a record's
@@ -110,6 +115,9 @@ struct SemanticSlamOptions {
   bool labelSplit = false;        ///< BirthRule::Unassigned: a landmark whose labels say it holds two objects
                                   ///< splits (LandmarkSplit.h); opt-in, measured in docs/association-front-end.md §5d
   bool nullEscape = true;         ///< mm-nh, BirthRule::Unassigned: step 7 above (docs/association-front-end.md §6b)
+  double anchoringInformation = 2.0;  ///< §10: a pairing anchors when ½ ln det(S R⁻¹) exceeds this (nats)
+  int loopClosureBranchWindow = 0;    ///< §10 (LoopClosureBranches.h): steps a second branch is kept open after
+                                      ///< an anchoring step before the better one is kept; 0: no branches
 };
 
 /// What became of one detection.
@@ -144,8 +152,24 @@ class SemanticSlam {
   /// (docs/association-front-end.md §10, two branches at an ambiguous loop closure).
   std::unique_ptr<SemanticSlam> fork() const;
 
-  /// Processes the next step of the log (steps must come in order, the first without odometry).
+  /// Processes the next step of the log (steps must come in order, the first without odometry): beginStep, then
+  /// completeStep.
   void addStep(const TimeStep& step);
+  /// The first half of addStep: steps 1-2, up to the joint assignment (BirthRule::Unassigned), found but not yet
+  /// applied. Between the halves the run may be forked and the fork told to keepApart() some of the assignment
+  /// (docs/association-front-end.md §10). Throws std::logic_error while a begun step is not completed.
+  void beginStep(const TimeStep& step);
+  /// The rest of the begun step (steps 3-7). Throws std::logic_error without a begun step.
+  void completeStep();
+  /// (§10) The begun step's records whose joint assignment *anchors*: pairs them with a landmark whose prediction
+  /// is uncertain beyond the sensor's own noise, I = ½ ln det(S R⁻¹) > options.anchoringInformation (S the
+  /// innovation covariance of step 2, R the detection's). Ascending record indices.
+  std::vector<std::size_t> anchoringDetections() const;
+  /// (§10) The begun step's `records` start provisional landmarks instead of taking the landmarks the joint
+  /// assignment gave them: objects not mapped before, so each such landmark is never merged (§5) with a landmark
+  /// active before the step (not only the one it was given: under the uncertainty that made the pairing anchor, the
+  /// merge test would otherwise pair it with the next look-alike in reach).
+  void keepApart(const std::vector<std::size_t>& records);
 
   const Smoother& smoother() const { return *smoother_; }
   int steps() const { return static_cast<int>(poseKeys_.size()); }
@@ -161,6 +185,17 @@ class SemanticSlam {
   RunResult result(bool withPoseCovariances = true) const;
   /// The landmark (or null hypothesis: nullopt) record r uses at the current estimate, and its weight.
   std::pair<std::optional<int>, double> chosenAssociation(const DetectionRecord& record) const;
+  /// The same at `estimate` (which holds the run's variables).
+  std::pair<std::optional<int>, double> chosenAssociation(const DetectionRecord& record, const Values& estimate) const;
+  /// The smoother factors that only hold a landmark variable in place: the weak priors of provisional and of
+  /// merged-away or dropped landmarks (§5), placeholders of the birth density rather than terms of the model.
+  std::vector<FactorIndex> weakPriors() const;
+  /// Posed landmarks seen by a position-only sensor: each landmark's orientation prior (step 2) is a Gaussian on
+  /// its position too, σ = 1e6 m per axis; this returns −2 ln of that position density's peak, d ln(2π σ²), the
+  /// term a branch's evidence replaces by the birth density (BranchScore.h). nullopt for other logs.
+  std::optional<double> orientationPriorPositionScore() const;
+  const UnassignedHypothesis& unassignedHypothesis() const { return unassigned_; }
+  const SemanticSlamOptions& options() const { return options_; }
   /// rᵀ R⁻¹ r of the detection against the landmark chosenAssociation() gives, at the current estimate (R: the
   /// detection's covariance); nullopt when it is on no landmark.
   std::optional<double> residualChi2(const DetectionRecord& record) const;
@@ -201,8 +236,13 @@ class SemanticSlam {
   /// (docs/association-front-end.md, §1-3).
   void findCandidatesWithUnassigned(const JointMarginal* marginal, const std::vector<int>& considered,
                                     DetectionRecord& record) const;
-  /// BirthRule::Unassigned: the step's records (from `first`) assigned jointly, one detection per landmark (§4).
-  void assignJointly(std::size_t first);
+  /// Whether the step's detections are assigned jointly (§1-4): BirthRule::Unassigned, not `known`.
+  bool jointlyAssigned() const;
+  /// BirthRule::Unassigned: the landmark each of the step's records (from `first`) is assigned, jointly, one
+  /// detection per landmark (§4); −1: unassigned.
+  std::vector<int> jointAssignment(std::size_t first) const;
+  /// The assignment applied: the records' assigned landmarks and, by exclusion, their remaining candidates.
+  void applyJointAssignment(std::size_t first, const std::vector<int>& assignedLandmark);
   /// The factors of one detection with candidates under the strategy (step 3).
   std::vector<FactorPtr> associationFactors(DetectionRecord& record) const;
   /// The factors a record stands for now: its own landmark's factor, its candidates' factors, or none.
@@ -286,6 +326,19 @@ class SemanticSlam {
   std::vector<DetectionRecord> records_;
   std::vector<std::size_t> firstRecordOfStep_;
   std::vector<double> stepTimes_;
+  /// A step between beginStep and completeStep.
+  struct PendingStep {
+    double time = 0.0;
+    FactorGraph propagation;  // the propagation, where it shares the association's solve (else empty)
+    Values newValues;
+    std::optional<JointMarginal> marginal;  // of the propagated pose and the `considered` landmarks (step 2)
+    std::vector<int> considered;
+    std::size_t first = 0;                  // the step's first record
+    int landmarksBeforeStep = 0;
+    std::vector<int> assignedLandmark;      // jointAssignment() of the step's records
+    std::vector<std::size_t> keptApart;     // keepApart()'s records
+  };
+  std::optional<PendingStep> pending_;
 
   SemanticSlam(const SemanticSlam& other) = default;  // for fork(): every member copied, the smoother forked
 };

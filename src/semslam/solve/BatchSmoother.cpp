@@ -69,6 +69,8 @@ FactorGraph BatchSmoother::factors() const {
   return graph;
 }
 
+FactorPtr BatchSmoother::factor(FactorIndex index) const { return slots_.at(index); }
+
 std::unique_ptr<Smoother> BatchSmoother::fork() const { return std::make_unique<BatchSmoother>(*this); }
 
 std::size_t BatchSmoother::memoryBytes() const {

@@ -604,6 +604,8 @@ FactorGraph IncrementalSmoother::factors() const {
   return graph;
 }
 
+FactorPtr IncrementalSmoother::factor(FactorIndex index) const { return slots_.at(index).factor; }
+
 std::unique_ptr<Smoother> IncrementalSmoother::fork() const {
   std::unique_ptr<IncrementalSmoother> copy(new IncrementalSmoother(*this));
   // The copy's estimate is a new map: point its slots at its own nodes.

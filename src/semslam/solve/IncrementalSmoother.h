@@ -104,6 +104,7 @@ class IncrementalSmoother final : public Smoother {
   const Values& estimate() const override;
   JointMarginal jointMarginal(const std::vector<Key>& keys) const override;
   FactorGraph factors() const override;
+  FactorPtr factor(FactorIndex index) const override;
   std::unique_ptr<Smoother> fork() const override;
   std::size_t memoryBytes() const override;
 

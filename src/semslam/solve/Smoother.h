@@ -53,6 +53,9 @@ class Smoother {
 
   /// The factors in force, in index order (removed ones left out).
   virtual FactorGraph factors() const = 0;
+  /// The factor with `index` (after any replaceFactor), or null once removed; throws std::out_of_range for an
+  /// index never given.
+  virtual FactorPtr factor(FactorIndex index) const = 0;
 
   /// Iterates to the optimum of the factors in force. A batch smoother is there after every update (no-op); an
   /// incremental one keeps an estimate one Gauss-Newton step from its linearization point, which this refines.

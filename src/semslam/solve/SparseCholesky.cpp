@@ -38,6 +38,8 @@ Matrix SparseCholesky::solve(const Matrix& b) const {
   return x;
 }
 
+double SparseCholesky::logDeterminant() const { return llt_.logDeterminant(); }
+
 std::size_t SparseCholesky::memoryBytes() const { return llt_.cholmod().memory_inuse; }
 
 }  // namespace semslam

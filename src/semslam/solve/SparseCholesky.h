@@ -32,6 +32,8 @@ class SparseCholesky {
   /// H⁻¹ b, and H⁻¹ B column by column (after a successful factorize).
   Vector solve(const Vector& b) const;
   Matrix solve(const Matrix& b) const;
+  /// ln det H = 2 Σ ln L_ii (after a successful factorize; the ordering P does not change it).
+  double logDeterminant() const;
 
  private:
   mutable Eigen::CholmodDecomposition<SparseMatrix, Eigen::Upper> llt_;  // mutable: cholmod() is not const

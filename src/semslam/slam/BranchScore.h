@@ -1,0 +1,32 @@
+#pragma once
+// BranchScore: how well one branch of a run explains the log so far (docs/association-front-end.md §10), as −2 ln
+// of its evidence: the probability of every detection and odometry reading under the branch's associations, the
+// poses and landmarks integrated out (Laplace's approximation at the branch's converged estimate X̂):
+//
+//   score = Σ_f [chi2_f(X̂) + 2 n_f] + ln det Λ(X̂) − N ln 2π       the model's factors (solve/LaplaceEvidence.h)
+//         − 2 L ln ρ                                                L active landmarks, each with the birth density
+//                                                                   ρ as its prior (UnassignedHypothesis::
+//                                                                   logLandmarkDensity)
+//         − 2 Σ_l ln Σ_c (1/M) Π_{r on l} P(s_r | c)                 each active landmark's labels, one class drawn
+//                                                                   from the uniform prior
+//         − 2 Σ_{r on no landmark} ln P₀(s_r)                       P₀ = Σ_c P(s | c) / M
+//
+// The model's factors are those in force with two substitutions. A max-mixture counts as its component active at
+// X̂, without its weight: the front end's candidate weights are posteriors of the association, not part of the
+// likelihood of the data given it. The weak priors (SemanticSlam::weakPriors) are left out: they stand in for ρ,
+// which is counted for every active landmark instead (their normaliser, σ the sensor's range, would otherwise
+// outweigh the evidence between two branches: §10); a dropped or merged-away landmark's variable then touches no
+// factor and leaves the integral.
+//
+// A lower score is a better branch. For two branches that differ only in whether detections of one object are on
+// one landmark or two, the difference is §5's merge test at X̂: −2 ln(N(p_P − p_L; 0, Σ_d) · class agreement / ρ)
+// (tests/slam/testBranchScore.cpp checks the geometric part in closed form).
+
+#include "semslam/slam/SemanticSlam.h"
+
+namespace semslam {
+
+/// The score above of `run` at its estimate converged (a fork of its smoother; the run is unchanged).
+double branchScore(const SemanticSlam& run);
+
+}  // namespace semslam

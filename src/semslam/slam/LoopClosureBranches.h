@@ -1,0 +1,64 @@
+#pragma once
+// LoopClosureBranches: a SemanticSlam run that keeps a second branch open where a step closes a loop on an
+// uncertain estimate (docs/association-front-end.md §10).
+//
+// A loop closure is decided by the step that makes it, yet the detection that would show it wrong (the true
+// landmark's own re-sighting, when the closure took a look-alike) often comes a few steps later. So where the
+// joint assignment of step k holds an anchoring pairing (SemanticSlam::anchoringDetections: I = ½ ln det(S R⁻¹)
+// above SemanticSlamOptions::anchoringInformation), the run splits:
+//   branch A  the step as the front end decided it;
+//   branch B  a fork of the run taken between the halves of step k (SemanticSlam::beginStep / completeStep), in
+//             which the anchoring detections start provisional landmarks, never merged with the landmarks they
+//             were paired with (SemanticSlam::keepApart).
+// Both take steps k+1 … k+W (W = SemanticSlamOptions::loopClosureBranchWindow); then the branch with the lower
+// BranchScore (−2 ln of its evidence, BranchScore.h) is kept and the other dropped; a split still open at the end
+// of the log is closed by finish(). At most one split is open at a time: an anchoring step during an open split is
+// decided by each branch's front end, as without branches. So a run costs at most twice a single run over the
+// steps a split is open, and a run with no anchoring step (or W = 0) is step for step the single run.
+//
+// Invariants: main_ is branch A while a split is open and the kept branch otherwise; alternative_ is branch B
+// exactly while a split is open; both have processed the same steps whenever no step is begun.
+
+#include <memory>
+#include <vector>
+
+#include "semslam/slam/SemanticSlam.h"
+
+namespace semslam {
+
+class LoopClosureBranches {
+ public:
+  /// One split: the step that opened it, the step after which it closed, both branches' scores then, and which was
+  /// kept.
+  struct Split {
+    int openedAt = 0;
+    int closedAfter = 0;
+    double scoreA = 0.0;
+    double scoreB = 0.0;
+    bool keptB = false;
+  };
+
+  /// Throws std::invalid_argument for a negative window, or a window with a birth rule other than
+  /// BirthRule::Unassigned or the `known` strategy (nothing is assigned jointly, so nothing anchors).
+  LoopClosureBranches(const LogHeader& header, SemanticSlamOptions options);
+
+  /// Processes the next step in every open branch, splitting or closing as above.
+  void addStep(const TimeStep& step);
+  /// Closes an open split, then ends the kept run (SemanticSlam::finish). Call once, after the last step.
+  void finish();
+
+  /// The kept run (while a split is open: branch A).
+  const SemanticSlam& slam() const { return *main_; }
+  /// Every split so far, in order.
+  const std::vector<Split>& splits() const { return splits_; }
+
+ private:
+  void closeSplit();
+
+  int window_;
+  std::unique_ptr<SemanticSlam> main_;
+  std::unique_ptr<SemanticSlam> alternative_;
+  std::vector<Split> splits_;
+};
+
+}  // namespace semslam

@@ -1,0 +1,79 @@
+// BranchScore (slam/BranchScore.h), −2 ln of a run's evidence, against §5's merge test in closed form: two
+// detections, from a pose that is known, of one object (one landmark) or of two (two landmarks) differ in score by
+//   Δ = −2 ln( N(z₁ − z₂; 0, R₁ + R₂) · M Σ_c P(c | s₁) P(c | s₂) / ρ ),
+// the Gaussian of the two positions' difference, the agreement of their labels (each under the uniform class
+// prior) and the birth density ρ = μ / V of a second landmark (docs/association-front-end.md §5, §10).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "semslam/slam/BranchScore.h"
+
+namespace semslam {
+namespace {
+
+constexpr double kMisclassification = 0.1;
+constexpr int kClasses = 3;
+const Point2 kFirst(5.0, 1.0), kSecond(5.4, 0.7);
+
+Matrix covariance(double sxx, double sxy, double syy) {
+  Matrix c(2, 2);
+  c << sxx, sxy, sxy, syy;
+  return c;
+}
+const Matrix kFirstCovariance = covariance(0.04, 0.01, 0.09), kSecondCovariance = covariance(0.16, -0.02, 0.05);
+
+LogHeader header() {
+  LogHeader h;
+  h.classes = kClasses;
+  h.semantic = SemanticKind::Label;
+  h.classifier.kind = ClassifierModelSpec::Kind::Categorical;
+  h.classifier.misclassification = kMisclassification;
+  h.sensor.kind = SensorKind::RelativePosition;
+  h.sensor.maxRange = 30.0;
+  h.sensor.fieldOfView = 2.0 * std::numbers::pi;
+  h.initialPose = PosePrior{SE2(), 1e-16 * Matrix::Identity(3, 3)};  // the pose known
+  return h;
+}
+
+Detection detection(const Point2& position, const Matrix& covariance, int label, int truthId) {
+  Detection d;
+  d.geometry = position;
+  d.covariance = covariance;
+  d.label = label;
+  d.truthId = truthId;
+  return d;
+}
+
+/// A run with `known` association of two detections from the same pose, labelled 0 and 1, of objects `firstId`
+/// and `secondId`.
+double scoreOf(int firstId, int secondId) {
+  SemanticSlamOptions options;
+  options.strategy = AssociationStrategy::Known;
+  SemanticSlam run(header(), options);
+  TimeStep first, second;
+  first.detections.push_back(detection(kFirst, kFirstCovariance, 0, firstId));
+  second.time = 1.0;
+  second.odometry = Odometry{SE2(), 1e-16 * Matrix::Identity(3, 3)};
+  second.detections.push_back(detection(kSecond, kSecondCovariance, 1, secondId));
+  run.addStep(first);
+  run.addStep(second);
+  return branchScore(run);
+}
+
+TEST(BranchScore, OneObjectAgainstTwoIsTheMergeTest) {
+  const Matrix sum = kFirstCovariance + kSecondCovariance;
+  const Vector difference = kFirst - kSecond;
+  const double geometric =
+      difference.dot(sum.inverse() * difference) + std::log((2.0 * std::numbers::pi * sum).determinant());
+  // Labels 0 and 1: P(c | s) = (0.9, 0.05, 0.05) and (0.05, 0.9, 0.05).
+  const double agreement = kClasses * (0.9 * 0.05 + 0.05 * 0.9 + 0.05 * 0.05);
+  const double logBirthDensity = -std::log(std::numbers::pi * 30.0 * 30.0);  // μ = 1 over the 30 m disc
+  const double expected = geometric - 2.0 * std::log(agreement) + 2.0 * logBirthDensity;
+  EXPECT_NEAR(scoreOf(0, 0) - scoreOf(0, 1), expected, 1e-6);
+}
+
+}  // namespace
+}  // namespace semslam

@@ -1,0 +1,168 @@
+// Two branches at an ambiguous loop closure (slam/LoopClosureBranches.h, docs/association-front-end.md §10).
+//
+// The scenario: a constellation of two objects, A and D, has a look-alike, B and E, the same two objects 0.8 m
+// further along y; a third object, F, has none. The robot maps A, D and F from a standstill, drives 20 m away and
+// back on odometry that is exact but declared uncertain (σ 0.5 m per 2 m step; detections σ 0.3 m), and on its
+// return first sees only the look-alikes: their pairing with A and D is inside the gate, far likelier than two new
+// objects and anchoring (the pose is known to 2 m, the detections to 0.3 m), so the front end closes the loop on
+// the wrong constellation. The next step sees A and D themselves 0.8 m from where that closure puts them, and
+// their look-alikes where it expects A and D: A and D start new landmarks, and the error stays. With a second
+// branch open for a few steps, the branch that kept B and E apart sees A, D and F re-sighted where they are
+// mapped, and its evidence wins.
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <numbers>
+#include <optional>
+#include <set>
+#include <stdexcept>
+
+#include "EstimateEquality.h"
+#include "semslam/slam/LoopClosureBranches.h"
+
+namespace semslam {
+namespace {
+
+constexpr int kA = 0, kD = 1, kF = 2, kB = 3, kE = 4;  // truth ids
+
+struct LookAlikes {
+  LogHeader header;
+  std::vector<Point2> objects{Point2(6.0, 0.0), Point2(4.0, -5.0), Point2(-3.0, 6.0),  // A, D, F
+                              Point2(6.0, 0.8), Point2(4.0, -4.2)};                    // B = A + s, E = D + s
+  double travelSigma;  // of each 2 m step of the drive away and back
+  static constexpr int kMapping = 4, kAway = 10, kBack = 10;  // steps: mapping at a standstill, away, back
+  static constexpr int kReturn = kMapping + kAway + kBack;    // the first step back: B and E alone
+
+  explicit LookAlikes(double travelSigma = 0.5) : travelSigma(travelSigma) {
+    header.sensor.kind = SensorKind::RelativePosition;
+    header.sensor.maxRange = 30.0;
+    header.sensor.fieldOfView = 2.0 * std::numbers::pi;
+    header.initialPose = PosePrior{SE2(), Vector3(1e-6, 1e-6, 1e-8).asDiagonal().toDenseMatrix()};
+  }
+
+  /// At 0 while mapping, out along −x by 2 m a step, back, and at a standstill from kReturn on.
+  static double x(int k) {
+    if (k < kMapping) return 0.0;
+    if (k < kMapping + kAway) return -2.0 * (k - kMapping + 1);
+    return -2.0 * kAway + 2.0 * (std::min(k, kReturn) - kMapping - kAway);
+  }
+
+  std::vector<int> seen(int k) const {
+    if (k < kMapping) return {kA, kD, kF};
+    if (k < kReturn) return {};
+    if (k == kReturn) return {kB, kE};
+    return {kA, kD, kF, kB, kE};
+  }
+
+  TimeStep step(int k) const {
+    TimeStep s;
+    s.time = k;
+    s.truePose = SE2(x(k), 0.0, 0.0);
+    if (k > 0) {
+      const double sigma = x(k) != x(k - 1) ? travelSigma : 0.01, headingSigma = 0.02 * sigma;
+      s.odometry = Odometry{SE2(x(k) - x(k - 1), 0.0, 0.0),
+                            Vector3(sigma * sigma, sigma * sigma, headingSigma * headingSigma).asDiagonal().toDenseMatrix()};
+    }
+    for (int id : seen(k)) {
+      Detection d;
+      d.geometry = SE2(x(k), 0.0, 0.0).transformTo(objects[static_cast<std::size_t>(id)]);
+      d.covariance = 0.3 * 0.3 * Matrix::Identity(2, 2);
+      d.truthId = id;
+      s.detections.push_back(d);
+    }
+    return s;
+  }
+};
+
+SemanticSlamOptions optionsWithWindow(int window) {
+  SemanticSlamOptions options;
+  options.loopClosureBranchWindow = window;
+  return options;
+}
+
+/// The landmark each truth id's detections end on, where they all end on one; -1 where they are split or on none.
+std::map<int, int> landmarkOfTruth(const SemanticSlam& slam) {
+  std::map<int, std::set<std::optional<int>>> on;
+  for (const DetectionRecord& record : slam.detections()) on[*record.truth].insert(slam.chosenAssociation(record).first);
+  std::map<int, int> landmark;
+  for (const auto& [truth, landmarks] : on) {
+    landmark[truth] = landmarks.size() == 1 && *landmarks.begin() ? **landmarks.begin() : -1;
+  }
+  return landmark;
+}
+
+LoopClosureBranches runScenario(int window, int steps, double travelSigma = 0.5) {
+  const LookAlikes scenario(travelSigma);
+  LoopClosureBranches run(scenario.header, optionsWithWindow(window));
+  for (int k = 0; k < steps; ++k) run.addStep(scenario.step(k));
+  run.finish();
+  return run;
+}
+
+constexpr int kSteps = LookAlikes::kReturn + 5;
+
+/// The record of object `truth`'s detection at `step`.
+const DetectionRecord& recordOf(const SemanticSlam& slam, int step, int truth) {
+  for (const DetectionRecord& record : slam.detections()) {
+    if (record.step == step && record.truth == truth) return record;
+  }
+  throw std::logic_error("no such detection");
+}
+
+TEST(LoopClosureBranches, WithoutABranchTheLookAlikeClosesTheLoopOnTheWrongObject) {
+  const LoopClosureBranches run = runScenario(0, kSteps);
+  EXPECT_TRUE(run.splits().empty());
+  // B's first detection ends on the landmark A's first detection started: the failure the branches are for.
+  const SemanticSlam& slam = run.slam();
+  const std::optional<int> landmarkOfA = slam.chosenAssociation(recordOf(slam, 0, kA)).first;
+  ASSERT_TRUE(landmarkOfA);
+  EXPECT_EQ(slam.chosenAssociation(recordOf(slam, LookAlikes::kReturn, kB)).first, landmarkOfA);
+}
+
+TEST(LoopClosureBranches, ABranchOpenUntilTheTrueObjectIsReSeenKeepsTheLookAlikeApart) {
+  const LoopClosureBranches run = runScenario(3, kSteps);
+  ASSERT_EQ(run.splits().size(), 1u);
+  const LoopClosureBranches::Split& split = run.splits().front();
+  EXPECT_EQ(split.openedAt, LookAlikes::kReturn);
+  EXPECT_EQ(split.closedAfter, LookAlikes::kReturn + 3);
+  EXPECT_TRUE(split.keptB);
+  EXPECT_LT(split.scoreB, split.scoreA);
+  // Every object's detections on one landmark of their own.
+  const std::map<int, int> landmarks = landmarkOfTruth(run.slam());
+  ASSERT_EQ(landmarks.size(), 5u);
+  std::set<int> distinct;
+  for (const auto& [truth, landmark] : landmarks) {
+    EXPECT_GE(landmark, 0) << "object " << truth;
+    distinct.insert(landmark);
+  }
+  EXPECT_EQ(distinct.size(), 5u);
+}
+
+TEST(LoopClosureBranches, ARunWithoutAnAnchoringPairingIsTheSingleRunBitForBit) {
+  // Precise odometry: every pairing is made from a well-known pose (and the look-alikes start landmarks of their
+  // own), so no split opens.
+  const LookAlikes scenario(0.01);
+  const LoopClosureBranches branched = runScenario(16, kSteps, scenario.travelSigma);
+  ASSERT_TRUE(branched.splits().empty());
+  SemanticSlam single(scenario.header, optionsWithWindow(0));
+  for (int k = 0; k < kSteps; ++k) single.addStep(scenario.step(k));
+  single.finish();
+  expectSameEstimate(branched.slam().smoother().estimate(), single.smoother().estimate());
+  ASSERT_EQ(branched.slam().detections().size(), single.detections().size());
+  for (std::size_t r = 0; r < single.detections().size(); ++r) {
+    EXPECT_EQ(branched.slam().chosenAssociation(branched.slam().detections()[r]).first,
+              single.chosenAssociation(single.detections()[r]).first);
+  }
+}
+
+TEST(LoopClosureBranches, AWindowNeedsTheJointAssignment) {
+  SemanticSlamOptions options = optionsWithWindow(4);
+  options.birth = BirthRule::Threshold;
+  EXPECT_THROW(LoopClosureBranches(LookAlikes().header, options), std::invalid_argument);
+  options = optionsWithWindow(-1);
+  EXPECT_THROW(LoopClosureBranches(LookAlikes().header, options), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace semslam
