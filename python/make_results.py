@@ -328,7 +328,8 @@ def section_lines(name, semslam, data, scratch):
         body = results_association_defaults.association_defaults_section(semslam, data, scratch)
     elif name == "loop-closure-branches":
         body = results_loop_closure_branches.loop_closure_branches_section(semslam, data, scratch,
-                                                                           lambda command: shown(command, data))
+                                                                           lambda command: shown(command, data),
+                                                                           sys.executable)
     elif name == "kitti-tracking":
         body = results_kitti_tracking.kitti_tracking_section(semslam, data, scratch,
                                                              lambda command: shown(command, data), sys.executable)

@@ -10,11 +10,13 @@ judged against `known` association's on the same log (the issue-10 requirement: 
 the runs' metrics.json and branches.csv; the commands are printed.
 """
 import concurrent.futures
+import json
 import os
 
 from results_commands import mean_cell, read_metrics, run_checked
 from results_max_mixtures import kitti_simulation
 
+HERE = os.path.dirname(os.path.abspath(__file__))
 WINDOWS = [0, 8, 16, 32]
 ROBOTS = [1, 2, 3, 4, 5]
 LABEL_SEEDS = [1, 2, 3]
@@ -137,7 +139,26 @@ def sweep_tables(families, folders, windows=WINDOWS):
     return lines
 
 
-def loop_closure_branches_section(semslam, data, scratch, shown):
+def sweep_summary(families, folders, windows=WINDOWS):
+    """What plot_loop_closure_branches.py draws: per simulated log, ATE over `known` association's per window; per
+    real family, the mean `da_accuracy_real` per window (over the logs where it is defined)."""
+    summary = {"windows": list(windows), "simulations": {}, "real": {}}
+    for family, (kind, logs) in families.items():
+        if kind == "simulation":
+            summary["simulations"][family] = [
+                [read_metrics(folders[(family, name, w)])["ate_rmse"] /
+                 read_metrics(folders[(family, name, "known")])["ate_rmse"] for w in windows] for name, _ in logs]
+        else:
+            means = []
+            for w in windows:
+                values = [read_metrics(folders[(family, name, w)]).get("da_accuracy_real") for name, _ in logs]
+                values = [v for v in values if isinstance(v, (int, float))]
+                means.append(sum(values) / len(values) if values else None)
+            summary["real"][family] = means
+    return summary
+
+
+def loop_closure_branches_section(semslam, data, scratch, shown, python):
     lines = ["## Two branches at an ambiguous loop closure: the window swept (issue 10)", ""]
     families = _logs(semslam, data, scratch)
     if not families:
@@ -153,6 +174,17 @@ def loop_closure_branches_section(semslam, data, scratch, shown):
               "(branches.csv). `time_s` is one run's, on a machine shared with the other runs of the section: for "
               "the cost, the side-by-side ratios of docs/association-front-end.md §10.", ""]
     lines += sweep_tables(families, folders)
+    summary = os.path.join(scratch, "loop_closure_branches.json")
+    with open(summary, "w") as f:
+        json.dump(sweep_summary(families, folders), f)
+    figures = os.path.join("docs", "figures")
+    os.makedirs(figures, exist_ok=True)
+    figure = os.path.join(figures, "loop_closure_branches.png")
+    run_checked([python, os.path.join(HERE, "plot_loop_closure_branches.py"), summary, "--out", figure])
+    lines += ["", "![ATE over known association's per simulated log, and the real logs' mean da_accuracy_real, "
+              "against the window](figures/loop_closure_branches.png)", "",
+              "The figure: `python3 python/plot_loop_closure_branches.py SUMMARY.json --out FILE.png`, SUMMARY.json "
+              "written by the section (python/results_loop_closure_branches.py, sweep_summary)."]
     lines += ["", "```sh",
               shown([semslam, "run", "--method", "mm-nh", "--in", "LOG", "--out", "DIR", "--no-covariances",
                      "--loop-closure-branches", "W"]),

@@ -1,10 +1,12 @@
 """python/results_loop_closure_branches.py (docs/results.md section loop-closure-branches) on a small seeded
 version: two 30-step semantic simulations (seeds 4 and 5; seed 4's first re-sightings anchor, so a split opens),
 windows 0 and 8. Checks the run folders (W = 0 is the default run: the same trajectory bit for bit as a run without
-the option, and no branches.csv), the split counts against branches.csv, and the table's rows and cells.
+the option, and no branches.csv), the split counts against branches.csv, the table's rows and cells, the summary the
+figure draws (against the runs' metrics), and that plot_loop_closure_branches.py draws it (Debian's matplotlib).
 
 Usage: test_results_loop_closure_branches.py SEMSLAM_BINARY
 """
+import json
 import os
 import subprocess
 import sys
@@ -13,6 +15,9 @@ import unittest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
 import results_loop_closure_branches as section  # noqa: E402
+from results_commands import read_metrics  # noqa: E402
+
+PLOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python", "plot_loop_closure_branches.py")
 
 SEMSLAM = None
 WINDOWS = [0, 8]
@@ -72,6 +77,26 @@ class LoopClosureBranchesSection(unittest.TestCase):
         self.assertEqual(labels, ["| 0", "| 8", "| `known`"])
         for line in per_log[4:]:
             self.assertEqual(len(line.strip("| ").split(" | ")), 3, line)  # the window and one ATE per log
+
+
+    def test_the_summary_is_the_runs_ates_over_known_and_its_figure_is_drawn(self):
+        summary = section.sweep_summary(self.families, self.folders, WINDOWS)
+        self.assertEqual(summary["windows"], WINDOWS)
+        self.assertEqual(summary["real"], {})
+        ratios = summary["simulations"]["Simulation"]
+        self.assertEqual(len(ratios), 2)
+        for (name, _), per_window in zip(self.families["Simulation"][1], ratios):
+            known = read_metrics(self.folders[("Simulation", name, "known")])["ate_rmse"]
+            for window, ratio in zip(WINDOWS, per_window):
+                ate = read_metrics(self.folders[("Simulation", name, window)])["ate_rmse"]
+                self.assertAlmostEqual(ratio, ate / known, places=12)
+        path = os.path.join(self.scratch.name, "summary.json")
+        with open(path, "w") as f:
+            json.dump(dict(summary, real={"Real": [0.5, 0.6]}), f)
+        figure = os.path.join(self.scratch.name, "sweep.png")
+        subprocess.run([sys.executable, PLOT, path, "--out", figure], check=True, capture_output=True)
+        with open(figure, "rb") as f:
+            self.assertEqual(f.read(8), b"\x89PNG\r\n\x1a\n")
 
 
 if __name__ == "__main__":
