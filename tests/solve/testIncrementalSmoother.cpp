@@ -106,6 +106,13 @@ TEST(IncrementalSmoother, RemovalAndReplacementMatchTheBatchSmoother) {
   incremental.update({}, {}, {observation});
   batch.update({}, {}, {observation});
   incremental.convergeAll();
+  // factor(index): the replacement at its index, null at the removed one, and an index never given refused.
+  for (const Smoother* smoother : {static_cast<const Smoother*>(&incremental), static_cast<const Smoother*>(&batch)}) {
+    EXPECT_EQ(smoother->factor(odometry), replacement);
+    EXPECT_EQ(smoother->factor(observation), nullptr);
+    EXPECT_EQ(smoother->factor(0), steps.factors[0][0]);  // indices count from 0 in the order of addition
+    EXPECT_THROW(smoother->factor(indices.back() + 1), std::out_of_range);
+  }
   EXPECT_EQ(incremental.factors().size(), batch.factors().size());
   ASSERT_TRUE(batch.lastResult().converged) << batch.lastResult().stopReason;
   EXPECT_NEAR(batch.factors().chi2(incremental.estimate()), batch.lastResult().finalChi2,
