@@ -23,19 +23,18 @@ LABEL_SEEDS = [1, 2, 3]
 TRACKING_SEQUENCES = range(11)
 SIMULATION_SEEDS = range(1, 9)
 TRAJECTORIES = ["00", "07"]
-KINDS = ["mrclam", "tracking", "woods", "simulation"]  # how a family's cells are made
 
 
 def _logs(semslam, data, scratch):
-    """{family: (kind, [(name, log path)])} of every log present, converted or simulated into `scratch`; kind is one
-    of KINDS."""
-    jobs = []  # (family, name, log, command)
+    """{family: (kind, [(name, log path)])} of every log present, converted or simulated into `scratch`; the kind
+    (mrclam, tracking, woods, simulation) says how sweep_tables makes the family's cells."""
+    jobs = []  # (family, kind, name, log, command)
     mrclam = os.path.join(data, "mrclam", "MRCLAM_Dataset6")
     if os.path.isdir(mrclam):
         for robot in ROBOTS:
             for seed in LABEL_SEEDS:
                 log = os.path.join(scratch, f"branches_r{robot}_s{seed}.jsonl")
-                jobs.append(("MRCLAM", f"r{robot} s{seed}", log,
+                jobs.append(("MRCLAM", "mrclam", f"r{robot} s{seed}", log,
                              [semslam, "convert", "mrclam", mrclam, "--out", log, "--robot", str(robot),
                               "--keyframe-period", "1", "--classes", "3", "--misclassification", "0.1", "--seed",
                               str(seed)]))
@@ -43,14 +42,14 @@ def _logs(semslam, data, scratch):
     if os.path.isdir(tracking):
         for sequence in TRACKING_SEQUENCES:
             log = os.path.join(scratch, f"branches_tracking{sequence:04d}.jsonl")
-            jobs.append(("KITTI tracking", f"{sequence:04d}", log,
+            jobs.append(("KITTI tracking", "tracking", f"{sequence:04d}", log,
                          [semslam, "convert", "kitti-tracking", tracking, "--sequence", str(sequence),
                           "--keyframe-period", "1", "--odometry", "noisy", "--odom-noise-scale", "5", "--seed", "1",
                           "--out", log]))
     woods = os.path.join(data, "utias-lost-in-the-woods")
     if os.path.isdir(woods):
         log = os.path.join(scratch, "branches_litw.jsonl")
-        jobs.append(("Lost in the Woods", "litw", log,
+        jobs.append(("Lost in the Woods", "woods", "litw", log,
                      [semslam, "convert", "utias-lost-in-the-woods", woods, "--out", log, "--classes", "3",
                       "--misclassification", "0.1", "--keyframe-period", "1"]))
     for trajectory in TRAJECTORIES:
@@ -59,13 +58,12 @@ def _logs(semslam, data, scratch):
             continue
         for seed in SIMULATION_SEEDS:
             log = os.path.join(scratch, f"branches_kitti{trajectory}_s{seed}.jsonl")
-            jobs.append((f"KITTI {trajectory}", f"seed {seed}", log, kitti_simulation(semslam, poses, log, seed)))
+            jobs.append((f"KITTI {trajectory}", "simulation", f"seed {seed}", log,
+                         kitti_simulation(semslam, poses, log, seed)))
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, os.cpu_count() or 2)) as pool:
-        list(pool.map(lambda job: run_checked(job[3]), jobs))
+        list(pool.map(lambda job: run_checked(job[4]), jobs))
     families = {}
-    for family, name, log, _ in jobs:
-        kind = {"MRCLAM": "mrclam", "KITTI tracking": "tracking", "Lost in the Woods": "woods"}.get(family,
-                                                                                                     "simulation")
+    for family, kind, name, log, _ in jobs:
         families.setdefault(family, (kind, []))[1].append((name, log))
     return families
 
