@@ -163,7 +163,7 @@ def loop_closure_branches_section(semslam, data, scratch, shown, python):
         return lines + ["None of MRCLAM, KITTI tracking, Lost in the Woods or the KITTI odometry poses is present: "
                         "section skipped.", ""]
     folders = run_sweep(semslam, families, scratch)
-    lines += ["`mm-nh` with `--loop-closure-branches W` (W = 0: no branches, the default). MRCLAM: mean "
+    lines += ["`mm-nh` with `--loop-closure-branches W` (W = 0: no branches; W = 16: the default). MRCLAM: mean "
               "`da_accuracy_real` over robots 1-5 × label seeds 1-3; KITTI tracking: mean `da_accuracy_real` / mean "
               "`clutter_rejected_moving` over 0000-0010 (0006 has no static landmark: its `da_accuracy_real` is "
               "undefined); Lost in the Woods: `da_accuracy_real` / ATE [m] / `time_s`; KITTI 00 and 07: how many of "

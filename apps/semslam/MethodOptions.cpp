@@ -1,6 +1,9 @@
 #include "MethodOptions.h"
 
 #include <map>
+#include <string>
+
+#include "semslam/slam/LoopClosureBranches.h"
 
 namespace semslam::cli {
 
@@ -63,12 +66,14 @@ void addSemanticSlamOptions(CLI::App* command, SemanticSlamOptions& options) {
   command->add_flag("--label-split", options.labelSplit,
                     "birth unassigned: split a landmark whose labels say it holds two objects "
                     "(docs/association-front-end.md §5d)");
-  command->add_option("--loop-closure-branches", options.loopClosureBranchWindow,
-                      "birth unassigned: where a step closes a loop on an uncertain estimate, keep a second branch "
-                      "without that closure for this many steps and keep the one the data favour "
-                      "(docs/association-front-end.md §10; 0: off)")
+  command
+      ->add_option_function<int>(
+          "--loop-closure-branches", [&options](int window) { options.loopClosureBranchWindow = window; },
+          "birth unassigned, ml / mm / mm-nh: where a step closes a loop on an uncertain estimate, keep a second "
+          "branch without that closure for this many steps and keep the one the data favour "
+          "(docs/association-front-end.md §10; 0: off)")
       ->check(CLI::Range(0, 1000000))
-      ->capture_default_str();
+      ->default_str(std::to_string(LoopClosureBranches::kDefaultWindow));
   command->add_option("--anchoring-information", options.anchoringInformation,
                       "birth unassigned, with --loop-closure-branches: the information, ½ ln det(S R⁻¹) in nats, "
                       "above which a pairing closes a loop")

@@ -167,13 +167,21 @@ TEST(RunCommand, LoopClosureBranchesAreListedInBranchesCsv) {
     EXPECT_EQ(kept, std::stod(apart) < std::stod(asIs) ? "apart" : "as-is") << row;
   }
   EXPECT_GE(rows, 1);
-  // Without the option (the default), nothing branches and no branches.csv is written.
+  // The default window (16) splits too; with 0, nothing branches and no branches.csv is written.
+  const fs::path byDefault = dir / "default";
+  ASSERT_EQ(runSemslam("run --method mm-nh --in \"" + log.string() + "\" --out \"" + byDefault.string() + "\"").exitCode,
+            0);
+  EXPECT_TRUE(fs::exists(byDefault / "branches.csv"));
   const fs::path single = dir / "single";
-  ASSERT_EQ(runSemslam("run --method mm-nh --in \"" + log.string() + "\" --out \"" + single.string() + "\"").exitCode, 0);
+  ASSERT_EQ(runSemslam("run --method mm-nh --loop-closure-branches 0 --in \"" + log.string() + "\" --out \"" +
+                       single.string() + "\"")
+                .exitCode,
+            0);
   EXPECT_FALSE(fs::exists(single / "branches.csv"));
-  // Branches need the joint assignment, and a window of at least 0 steps.
-  for (const std::string flags : {"--method known --loop-closure-branches 8", "--method mm-nh --birth threshold "
-                                  "--loop-closure-branches 8", "--method mm-nh --loop-closure-branches -1"}) {
+  // Branches need the joint assignment, factors that are the likelihood, and a window of at least 0 steps.
+  for (const std::string flags :
+       {"--method known --loop-closure-branches 8", "--method gpda --loop-closure-branches 8",
+        "--method mm-nh --birth threshold --loop-closure-branches 8", "--method mm-nh --loop-closure-branches -1"}) {
     EXPECT_EQ(runSemslam("run " + flags + " --in \"" + log.string() + "\" --out \"" + (dir / "bad").string() + "\"")
                   .exitCode,
               2)

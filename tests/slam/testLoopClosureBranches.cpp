@@ -156,12 +156,41 @@ TEST(LoopClosureBranches, ARunWithoutAnAnchoringPairingIsTheSingleRunBitForBit) 
   }
 }
 
-TEST(LoopClosureBranches, AWindowNeedsTheJointAssignment) {
+TEST(LoopClosureBranches, AWindowNeedsTheJointAssignmentAndFactorsThatAreTheLikelihood) {
+  for (const AssociationStrategy strategy : {AssociationStrategy::Known, AssociationStrategy::Gpda}) {
+    SemanticSlamOptions options = optionsWithWindow(4);
+    options.strategy = strategy;
+    EXPECT_THROW(LoopClosureBranches(LookAlikes().header, options), std::invalid_argument) << strategyName(strategy);
+  }
   SemanticSlamOptions options = optionsWithWindow(4);
   options.birth = BirthRule::Threshold;
   EXPECT_THROW(LoopClosureBranches(LookAlikes().header, options), std::invalid_argument);
   options = optionsWithWindow(-1);
   EXPECT_THROW(LoopClosureBranches(LookAlikes().header, options), std::invalid_argument);
+}
+
+TEST(LoopClosureBranches, TheDefaultWindowIsOnWhereBranchesApplyAndOffElsewhere) {
+  for (const AssociationStrategy strategy : allStrategies()) {
+    for (const BirthRule birth : {BirthRule::Unassigned, BirthRule::Threshold}) {
+      SemanticSlamOptions options;
+      options.strategy = strategy;
+      options.birth = birth;
+      const bool applies = birth == BirthRule::Unassigned && strategy != AssociationStrategy::Known &&
+                           strategy != AssociationStrategy::Gpda;
+      EXPECT_EQ(LoopClosureBranches::window(options), applies ? LoopClosureBranches::kDefaultWindow : 0)
+          << strategyName(strategy);
+      options.loopClosureBranchWindow = 0;  // off is accepted everywhere
+      EXPECT_EQ(LoopClosureBranches::window(options), 0);
+    }
+  }
+  // With the default options, the scenario's loop closure opens a split (the test above keeps the look-alike apart
+  // with a window of 3).
+  const LookAlikes scenario;
+  LoopClosureBranches run(scenario.header, SemanticSlamOptions{});
+  for (int k = 0; k < kSteps; ++k) run.addStep(scenario.step(k));
+  run.finish();
+  ASSERT_EQ(run.splits().size(), 1u);
+  EXPECT_EQ(run.splits().front().openedAt, LookAlikes::kReturn);
 }
 
 }  // namespace

@@ -12,8 +12,8 @@
 //                          truth `not-a-landmark` for clutter, `unknown` where the dataset cannot decide, empty
 //                          where the log has no truth; chi2 = rᵀR⁻¹r of the detection against its landmark at the
 //                          final estimate, empty without a landmark)
-//   branches.csv           `opened_at,closed_after,score_as_is,score_apart,kept`: paper B with
-//                          --loop-closure-branches, one row per split (slam/LoopClosureBranches.h): the step that
+//   branches.csv           `opened_at,closed_after,score_as_is,score_apart,kept`: paper B's ml,
+//                          mm and mm-nh (loop-closure branches, on by default), one row per split (slam/LoopClosureBranches.h): the step that
 //                          opened it, the step after which it closed, the two branches' scores (−2 ln evidence,
 //                          slam/BranchScore.h) and which was kept, `as-is` or `apart`
 // metrics.json is written by io/RunMetricsFile.h. Every file is written atomically (io/AtomicFile.h); a file whose

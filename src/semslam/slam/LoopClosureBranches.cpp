@@ -6,13 +6,23 @@
 
 namespace semslam {
 
-LoopClosureBranches::LoopClosureBranches(const LogHeader& header, SemanticSlamOptions options)
-    : window_(options.loopClosureBranchWindow) {
-  if (window_ < 0) throw std::invalid_argument("loop-closure branch window must be >= 0");
-  if (window_ > 0 && (options.birth != BirthRule::Unassigned || options.strategy == AssociationStrategy::Known)) {
-    throw std::invalid_argument("loop-closure branches need the unassigned birth rule and a strategy that associates "
-                                "(not known)");
+int LoopClosureBranches::window(const SemanticSlamOptions& options) {
+  const bool applies = options.birth == BirthRule::Unassigned &&
+                       (options.strategy == AssociationStrategy::MaximumLikelihood ||
+                        options.strategy == AssociationStrategy::MaxMixture ||
+                        options.strategy == AssociationStrategy::MaxMixtureNullHypothesis);
+  if (!options.loopClosureBranchWindow) return applies ? kDefaultWindow : 0;
+  const int window = *options.loopClosureBranchWindow;
+  if (window < 0) throw std::invalid_argument("loop-closure branch window must be >= 0");
+  if (window > 0 && !applies) {
+    throw std::invalid_argument("loop-closure branches need the unassigned birth rule and the ml, mm or mm-nh "
+                                "strategy (known assigns nothing; gpda's factors carry EM weights)");
   }
+  return window;
+}
+
+LoopClosureBranches::LoopClosureBranches(const LogHeader& header, SemanticSlamOptions options)
+    : window_(window(options)) {
   main_ = std::make_unique<SemanticSlam>(header, std::move(options));
 }
 

@@ -16,6 +16,12 @@
 // decided by each branch's front end, as without branches. So a run costs at most twice a single run over the
 // steps a split is open, and a run with no anchoring step (or W = 0) is step for step the single run.
 //
+// Where branches apply: a joint assignment whose pairings can anchor (BirthRule::Unassigned; not `known`) and
+// factors that are the data's likelihood under one association, which BranchScore integrates: ml's single
+// factors and mm / mm-nh's max-mixtures. gpda's factors are scaled by its EM weights (Bowman et al.), so two gpda
+// branches have no comparable evidence. There the window defaults to kDefaultWindow; elsewhere to none, and an
+// explicit window is refused.
+//
 // Invariants: main_ is branch A while a split is open and the kept branch otherwise; alternative_ is branch B
 // exactly while a split is open; both have processed the same steps whenever no step is begun.
 
@@ -38,8 +44,16 @@ class LoopClosureBranches {
     bool keptB = false;
   };
 
-  /// Throws std::invalid_argument for a negative window, or a window with a birth rule other than
-  /// BirthRule::Unassigned or the `known` strategy (nothing is assigned jointly, so nothing anchors).
+  /// The window where branches apply and SemanticSlamOptions::loopClosureBranchWindow is unset: the middle of the
+  /// stable range of the sweep over KITTI 00 and 07 simulations, MRCLAM, KITTI tracking and Lost in the Woods
+  /// (docs/association-front-end.md §10: 16 and 32 equal on the simulations, 8 short of them; 16 costs half of 32).
+  static constexpr int kDefaultWindow = 16;
+
+  /// The window `options` ask for: loopClosureBranchWindow if set, else kDefaultWindow where branches apply and 0
+  /// elsewhere. Throws std::invalid_argument for a negative window, or a positive one where branches do not apply.
+  static int window(const SemanticSlamOptions& options);
+
+  /// Throws as window() does.
   LoopClosureBranches(const LogHeader& header, SemanticSlamOptions options);
 
   /// Processes the next step in every open branch, splitting or closing as above.

@@ -116,8 +116,10 @@ struct SemanticSlamOptions {
                                   ///< splits (LandmarkSplit.h); opt-in, measured in docs/association-front-end.md §5d
   bool nullEscape = true;         ///< mm-nh, BirthRule::Unassigned: step 7 above (docs/association-front-end.md §6b)
   double anchoringInformation = 2.0;  ///< §10: a pairing anchors when ½ ln det(S R⁻¹) exceeds this (nats)
-  int loopClosureBranchWindow = 0;    ///< §10 (LoopClosureBranches.h): steps a second branch is kept open after
-                                      ///< an anchoring step before the better one is kept; 0: no branches
+  /// §10 (LoopClosureBranches.h): steps a second branch is kept open after an anchoring step before the better one
+  /// is kept; 0: no branches. Unset: LoopClosureBranches::kDefaultWindow where branches apply (BirthRule::Unassigned
+  /// with ml, mm or mm-nh), none elsewhere.
+  std::optional<int> loopClosureBranchWindow;
 };
 
 /// What became of one detection.
