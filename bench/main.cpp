@@ -1,12 +1,14 @@
 // semslam_bench: our solvers and Ceres on the standard pose graphs, then the ratio table (RatioTable.h); one step
 // of the hybrid belief with each weight method (HybridStepBenchmark.h); paper A's whole study on one layout
-// (HybridStudyBenchmark.h); a mixture-heavy mm-nh run on each back end (MixtureRunBenchmark.h).
+// (HybridStudyBenchmark.h); a mixture-heavy mm-nh run on each back end (MixtureRunBenchmark.h); mm-nh on whole real
+// recordings against real time (RealLogRunBenchmark.h).
 //
 //   semslam_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true   (what `make bench` runs)
 //   semslam_bench --benchmark_filter=manhattan                                       (one dataset)
 //   semslam_bench --benchmark_filter=HybridStep                                      (the hybrid step)
 //   semslam_bench --benchmark_filter=HybridStudy                                     (paper A's study)
 //   semslam_bench --benchmark_filter=MixtureRun                                      (mm-nh on both back ends)
+//   semslam_bench --benchmark_filter=RealLogRun                                      (mm-nh on real recordings)
 
 #include <benchmark/benchmark.h>
 
@@ -16,6 +18,7 @@
 #include "HybridStepBenchmark.h"
 #include "HybridStudyBenchmark.h"
 #include "MixtureRunBenchmark.h"
+#include "RealLogRunBenchmark.h"
 #include "RatioTable.h"
 #include "SemslamSolverBenchmarks.h"
 #ifdef SEMSLAM_BENCH_HAVE_CERES
@@ -35,6 +38,7 @@ int main(int argc, char** argv) {
   semslam::bench::registerHybridStepBenchmarks();
   semslam::bench::registerHybridStudyBenchmarks();
   semslam::bench::registerMixtureRunBenchmarks();
+  semslam::bench::registerRealLogRunBenchmarks();
 #ifndef SEMSLAM_BENCH_HAVE_CERES
   std::printf("semslam_bench was built without Ceres (find_package(Ceres) failed): our solvers only\n");
 #endif

@@ -214,7 +214,7 @@ void bindGraph(py::module_& module) {
       "A max-mixture of factors (paper B): at any estimate the component of least −log(w_i N_i) is active.")
       .def(py::init([](const std::vector<std::pair<MutableFactor, double>>& components) {
              std::vector<MaxMixtureFactor::Component> parts;
-             for (const auto& [factor, weight] : components) parts.push_back({factor, weight});
+             for (const auto& [factor, weight] : components) parts.push_back({factor, weight, std::nullopt});
              return std::make_shared<MaxMixtureFactor>(std::move(parts));
            }),
            py::arg("components"), "components: a list of (factor, weight) pairs")

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <set>
 
 #include "semslam/factors/MaxMixtureFactor.h"
 #include "semslam/factors/PriorFactor.h"
@@ -135,4 +136,41 @@ TEST(MaxMixtureFactor, RejectsBadComponents) {
   const auto robust = std::make_shared<const PriorFactor<Point2>>(
       kNear, Point2(0, 0), NoiseModel::isotropic(2, 1.0)->withRobustKernel(std::make_shared<HuberKernel>(1.0)));
   EXPECT_THROW(MaxMixtureFactor({{robust, 1.0}}), std::invalid_argument);
+}
+
+TEST(MaxMixtureFactor, AWidenedComponentChoosesAndCostsAsTheSameFactorEvaluatedOnItsOwn) {
+  // Paper B's null hypothesis: the best candidate's factor with σ × 100. Declared a widening, the mixture reuses
+  // that candidate's chi2 (over s²); the choice, cost and linearisation must equal the undeclared mixture's.
+  const Vector2 z(4.0, 0.0);
+  const double scale = 100.0;
+  const MaxMixtureFactor plain({{rangeBearing(kNear, z), 0.45}, {rangeBearing(kFar, z), 0.45},
+                                {rangeBearing(kNear, z, scale), 0.1}});
+  const MaxMixtureFactor widened({{rangeBearing(kNear, z), 0.45},
+                                  {rangeBearing(kFar, z), 0.45},
+                                  {rangeBearing(kNear, z, scale), 0.1, MaxMixtureFactor::Widening{0, scale}}});
+  std::set<int> chosen;
+  for (double y : {-6.0, -2.0, -0.6, 0.0, 0.4, 1.0, 1.5, 3.0, 8.0}) {
+    const Values values = twoLandmarks(y);
+    chosen.insert(plain.activeComponent(values));
+    EXPECT_EQ(widened.activeComponent(values), plain.activeComponent(values)) << "y = " << y;
+    EXPECT_NEAR(widened.chi2(values), plain.chi2(values), 1e-9 * std::max(1.0, plain.chi2(values))) << "y = " << y;
+    LinearizedFactor a, b;
+    plain.linearize(values, a);
+    widened.linearize(values, b);
+    EXPECT_TRUE(a.whitenedError.isApprox(b.whitenedError, 1e-12)) << "y = " << y;
+  }
+  EXPECT_EQ(chosen, (std::set<int>{0, 1, 2}));  // every component chosen somewhere, the null far off
+}
+
+TEST(MaxMixtureFactor, AWideningThatIsNotOneIsRefused) {
+  const Vector2 z(4.0, 0.0);
+  using Widening = MaxMixtureFactor::Widening;
+  auto build = [&](FactorPtr widenedFactor, Widening widening) {
+    return MaxMixtureFactor({{rangeBearing(kNear, z), 0.5}, {widenedFactor, 0.5, widening}});
+  };
+  EXPECT_NO_THROW(build(rangeBearing(kNear, z, 10.0), Widening{0, 10.0}));
+  EXPECT_THROW(build(rangeBearing(kNear, z, 10.0), Widening{0, 5.0}), std::invalid_argument);   // wrong scale
+  EXPECT_THROW(build(rangeBearing(kFar, z, 10.0), Widening{0, 10.0}), std::invalid_argument);   // other keys
+  EXPECT_THROW(build(rangeBearing(kNear, z, 10.0), Widening{1, 10.0}), std::invalid_argument);  // not earlier
+  EXPECT_THROW(build(rangeBearing(kNear, z, 0.5), Widening{0, 0.5}), std::invalid_argument);    // narrower
 }

@@ -1,6 +1,7 @@
 #include "semslam/factors/MaxMixtureFactor.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -36,16 +37,42 @@ MaxMixtureFactor::MaxMixtureFactor(std::vector<Component> components)
     }
     keySlots_.push_back(std::move(slots));
   }
+  for (std::size_t i = 0; i < components_.size(); ++i) checkWidening(i);
   const double minimum = *std::min_element(constants.begin(), constants.end());
   for (double c : constants) constants_.push_back(c - minimum);
 }
 
+void MaxMixtureFactor::checkWidening(std::size_t i) const {
+  const Component& component = components_[i];
+  if (!component.widens) return;
+  const Widening& widening = *component.widens;
+  if (widening.of < 0 || static_cast<std::size_t>(widening.of) >= i || components_[widening.of].widens) {
+    throw std::invalid_argument("a widened max-mixture component must widen an earlier, unwidened component");
+  }
+  const Factor& widened = *component.factor;
+  const Factor& original = *components_[widening.of].factor;
+  const double expected = *original.logNormalizer() + original.errorDimension() * std::log(widening.sigmaScale);
+  if (!(widening.sigmaScale >= 1.0) || widened.keys() != original.keys() ||
+      widened.errorDimension() != original.errorDimension() ||
+      std::abs(*widened.logNormalizer() - expected) > 1e-9 * std::max(1.0, std::abs(expected))) {
+    throw std::invalid_argument("a widened max-mixture component must be its original with every standard "
+                                "deviation scaled by sigmaScale >= 1");
+  }
+}
+
 std::pair<int, double> MaxMixtureFactor::choose(const Values& values) const {
+  constexpr std::size_t kInline = 8;  // each component's chi2, for the widenings (no allocation for small mixtures)
+  std::array<double, kInline> inlineChi2;
+  std::vector<double> heapChi2(components_.size() > kInline ? components_.size() : 0);
+  double* chi2s = components_.size() > kInline ? heapChi2.data() : inlineChi2.data();
   int best = 0;
   double bestCost = std::numeric_limits<double>::infinity();
   double bestChi2 = 0.0;
   for (std::size_t i = 0; i < components_.size(); ++i) {
-    const double chi2 = components_[i].factor->chi2(values);
+    const std::optional<Widening>& widens = components_[i].widens;
+    const double chi2 = widens ? chi2s[widens->of] / (widens->sigmaScale * widens->sigmaScale)
+                               : components_[i].factor->chi2(values);
+    chi2s[i] = chi2;
     const double cost = chi2 + 2.0 * constants_[i];  // 2 (½‖r_i‖² + c_i − c_min)
     if (cost < bestCost) {
       best = static_cast<int>(i);

@@ -19,9 +19,18 @@
 // Keys: the union of the components' keys, in first-appearance order. The factor is immutable: re-weighting
 // means building a new one (Smoother::replaceFactor).
 //
+// A component may be declared a *widening* of an earlier one j: the same factor with every standard deviation
+// scaled by s ≥ 1 (paper B's null hypothesis is the best candidate's detection factor widened), so that
+// ‖r_i‖² = ‖r_j‖² / s² and n_i = n_j + m ln s. The choice then evaluates factor j once for both (in mm-nh with one
+// candidate, half the work of `activeComponent`, which the front end calls for every detection of every landmark it
+// sees, docs/association-front-end.md §6b). The declaration is checked where it can be: same keys, same error
+// dimension, and the log-normalisers differing by m ln s (to 1e-9).
+//
 // Invariants: at least one component; weights finite and > 0; every component a normalised Gaussian factor
-// (logNormalizer present); otherwise std::invalid_argument.
+// (logNormalizer present); a widening refers to an earlier component that is not itself a widening, with the checks
+// above; otherwise std::invalid_argument.
 
+#include <optional>
 #include <vector>
 
 #include "semslam/graph/Factor.h"
@@ -30,9 +39,16 @@ namespace semslam {
 
 class MaxMixtureFactor final : public Factor {
  public:
+  /// `factor` is component `of` with every standard deviation times `sigmaScale` (see the header comment).
+  struct Widening {
+    int of = 0;
+    double sigmaScale = 1.0;
+  };
+
   struct Component {
     FactorPtr factor;
     double weight = 1.0;
+    std::optional<Widening> widens;
   };
 
   explicit MaxMixtureFactor(std::vector<Component> components);
@@ -48,6 +64,8 @@ class MaxMixtureFactor final : public Factor {
 
  private:
   static std::vector<Key> unionOfKeys(const std::vector<Component>& components);
+  /// Throws std::invalid_argument where component i's widening (if any) breaks the header's invariants.
+  void checkWidening(std::size_t i) const;
   /// The chosen component and its chi2 (‖r_i‖²).
   std::pair<int, double> choose(const Values& values) const;
 

@@ -552,12 +552,13 @@ std::vector<FactorPtr> SemanticSlam::associationFactors(DetectionRecord& record)
       std::vector<MaxMixtureFactor::Component> components;
       for (std::size_t c = 0; c < record.candidates.size(); ++c) {
         components.push_back({factory_.detectionFactor(pose, landmarks_[record.candidates[c]].key, record.measurement),
-                              record.weights[c] * (withNull ? 1.0 - options_.nullWeight : 1.0)});
+                              record.weights[c] * (withNull ? 1.0 - options_.nullWeight : 1.0), std::nullopt});
       }
-      if (withNull) {
+      if (withNull) {  // the best candidate's factor widened (B, sec. IV-C): the mixture evaluates it once for both
         components.push_back({factory_.detectionFactor(pose, landmarks_[best].key, record.measurement,
                                                        options_.nullSigmaScale),
-                              options_.nullWeight});
+                              options_.nullWeight,
+                              MaxMixtureFactor::Widening{bestCandidate(record), options_.nullSigmaScale}});
       }
       record.mixture = std::make_shared<const MaxMixtureFactor>(std::move(components));
       return {record.mixture};
