@@ -56,9 +56,15 @@ def run(command):
     return result.stdout
 
 
+# The binary the sections run (--build), shown to the reader as the quick start's build/bin/semslam: a build in a
+# scratch folder must not leak its path into docs/results.md.
+SEMSLAM_RUN = os.path.join("build", "bin", "semslam")
+SEMSLAM_SHOWN = "build/bin/semslam"
+
+
 def shown(command, data):
     """The command as a reader would type it from the repository root."""
-    text = " ".join(command)
+    text = " ".join(command).replace(SEMSLAM_RUN, SEMSLAM_SHOWN)
     return text.replace(data, "../shared/data").replace(os.getcwd() + "/", "")
 
 
@@ -375,7 +381,8 @@ def main():
     parser.add_argument("--only", action="append", choices=SECTIONS,
                         help="regenerate only this section of the existing file (repeatable)")
     args = parser.parse_args()
-    semslam = os.path.join(args.build, "bin", "semslam")
+    global SEMSLAM_RUN
+    semslam = SEMSLAM_RUN = os.path.join(args.build, "bin", "semslam")
     data = os.path.abspath(args.data)
     if not os.path.exists(semslam):
         sys.exit(f"make_results.py: {semslam} not found: build first (make build)")

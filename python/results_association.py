@@ -90,18 +90,19 @@ def association_section(semslam, data, scratch, shown):
 
 # (KITTI odometry sequence, simulator seed): the KITTI 00 simulation of docs/results.md ("max-mixtures") is seed 1;
 # the others are the same kind of log, which the issue's target must hold on too.
-KITTI_LOGS = [("00", 1), ("00", 2), ("00", 3), ("07", 1), ("07", 2), ("07", 3)]
+KITTI_LOGS = [(sequence, seed) for sequence in ("00", "07") for seed in range(1, 9)]
 KITTI_METHODS = ["known", "ml", "mm-nh"]
 
 
 def kitti_generalisation_section(semslam, data, scratch, shown):
     lines = ["## KITTI semantic simulations beyond the one of the max-mixtures section (issue 10)", "",
              "The issue's KITTI target (default options: mm-nh ATE ≤ 2 × known-DA's and ≤ ml's) on every "
-             "simulation of the same kind: KITTI odometry sequences 00 and 07, simulator seeds 1-3 (seed 1 of 00 is "
-             "the log of the max-mixtures section). `target` says whether mm-nh meets both bounds.", "",
-             "| sequence | seed | known ATE [m] | ml ATE [m] | mm-nh ATE [m] | ml da_accuracy_real | "
-             "mm-nh da_accuracy_real | mm-nh time [s] | target |",
-             "|---|---|---|---|---|---|---|---|---|"]
+             "simulation of the same kind: KITTI odometry sequences 00 and 07, simulator seeds 1-8 (seed 1 of 00 is "
+             "the log of the max-mixtures section). `≤ 2 × known`, `≤ ml`: each bound; `target`: both. "
+             "`mm-nh − ml` shows how far apart the two are where the second bound fails.", "",
+             "| sequence | seed | known ATE [m] | ml ATE [m] | mm-nh ATE [m] | mm-nh − ml [m] | ml da_accuracy_real | "
+             "mm-nh da_accuracy_real | mm-nh time [s] | ≤ 2 × known | ≤ ml | target |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     jobs = []
     for sequence, seed in KITTI_LOGS:
         trajectory = os.path.join(data, "kitti-odometry-poses", f"{sequence}.txt")
@@ -119,18 +120,30 @@ def kitti_generalisation_section(semslam, data, scratch, shown):
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, (os.cpu_count() or 2))) as pool:
         list(pool.map(lambda job: run_checked(job[4]), jobs))
     results = {(j[0], j[1], j[2]): read_metrics(j[3]) for j in jobs}
-    met = 0
+    met = {"known": 0, "ml": 0, "both": 0}
+    above_ml = []  # (mm-nh's ATE minus ml's, that over ml's) where mm-nh's is the higher
     for sequence, seed in KITTI_LOGS:
         if (sequence, seed, "known") not in results:
             continue
         known, ml, mm = (results[(sequence, seed, m)] for m in KITTI_METHODS)
-        ok = mm["ate_rmse"] <= 2.0 * known["ate_rmse"] and mm["ate_rmse"] <= ml["ate_rmse"]
-        met += ok
+        within_known = mm["ate_rmse"] <= 2.0 * known["ate_rmse"]
+        within_ml = mm["ate_rmse"] <= ml["ate_rmse"]
+        met["known"] += within_known
+        met["ml"] += within_ml
+        if not within_ml:
+            above_ml.append((mm["ate_rmse"] - ml["ate_rmse"], mm["ate_rmse"] / ml["ate_rmse"] - 1.0))
+        met["both"] += within_known and within_ml
         lines.append(f"| {sequence} | {seed} | {known['ate_rmse']:.3f} | {ml['ate_rmse']:.3f} | {mm['ate_rmse']:.3f} | "
-                     f"{ml['da_accuracy_real']:.3f} | {mm['da_accuracy_real']:.3f} | {mm['time_s']:.1f} | "
-                     f"{'yes' if ok else 'no'} |")
+                     f"{mm['ate_rmse'] - ml['ate_rmse']:+.4f} | {ml['da_accuracy_real']:.3f} | "
+                     f"{mm['da_accuracy_real']:.3f} | {mm['time_s']:.1f} | {'yes' if within_known else 'no'} | "
+                     f"{'yes' if within_ml else 'no'} | {'yes' if within_known and within_ml else 'no'} |")
     example = kitti_simulation(semslam, "../shared/data/kitti-odometry-poses/SEQ.txt", "kSEQ-S.jsonl", "S")
-    lines += ["", f"Target met on {met} of {len(results) // len(KITTI_METHODS)} logs.", "", "```sh",
+    logs = len(results) // len(KITTI_METHODS)
+    lines += ["", f"mm-nh within 2 × known-DA's ATE on {met['known']} of {logs} logs, at most ml's on {met['ml']}, "
+              f"both (the target) on {met['both']}."
+              + (f" Where mm-nh's ATE is above ml's, it is so by {min(a for a, _ in above_ml):.4f} to "
+                 f"{max(a for a, _ in above_ml):.4f} m (at most {max(r for _, r in above_ml):.1%} of ml's)."
+                 if above_ml else ""), "", "```sh",
               shown([str(a) for a in example]),
               "for m in known ml mm-nh; do build/bin/semslam run --method $m --in kSEQ-S.jsonl --out kSEQ-S/$m "
               "--no-covariances; done", "```", ""]
