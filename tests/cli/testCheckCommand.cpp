@@ -83,6 +83,9 @@ TEST(CheckCommand, CountsUnknownTruthAndLeavesItOutOfTheResiduals) {
             std::string::npos)
       << run.output;
   EXPECT_NE(run.output.find("1 clutter, 1 unknown truth, 2 without a true pose"), std::string::npos) << run.output;
+  // The odometry over windows: one true pose only, so no window has both ends (eval/MeasurementResiduals.h).
+  EXPECT_NE(run.output.find("odometry over windows of n steps"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("           1                 0       0.000       0.000"), std::string::npos) << run.output;
 
   // The same detection in a version-1 file is an error naming the line.
   std::string old = header;

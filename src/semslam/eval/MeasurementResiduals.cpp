@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "semslam/core/ChiSquare.h"
 #include "semslam/models/RangeBearingElevationSensor3.h"
 #include "semslam/models/RangeBearingSensor2.h"
 #include "semslam/models/RelativePositionSensor2.h"
@@ -127,6 +128,26 @@ Vector odometryResidual(const Pose& previous, const Pose& current, const Odometr
   return SE3::Log(z->between(a->between(*b)));
 }
 
+// The NEES of the composed `odometry` (consecutive steps, oldest first) against the true relative pose `relative`
+// of the window's ends (header comment: first-order covariance, r = Log(Z⁻¹ · relative)); nullopt where an
+// increment is not of the relative pose's group or its covariance not of the group's dimension.
+template <class Group>
+std::optional<double> composedOdometryNees(const std::vector<const Odometry*>& odometry, const Group& relative) {
+  Group composed;
+  Matrix covariance = Matrix::Zero(Group::kDim, Group::kDim);
+  for (const Odometry* step : odometry) {
+    const auto* increment = std::get_if<Group>(&step->increment);
+    if (!increment || step->covariance.rows() != Group::kDim || step->covariance.cols() != Group::kDim) {
+      return std::nullopt;
+    }
+    const Matrix adjoint = increment->inverse().adjoint();  // Ad(Z_i⁻¹)
+    covariance = adjoint * covariance * adjoint.transpose() + step->covariance;
+    composed = composed.compose(*increment);
+  }
+  const Vector residual = Group::Log(composed.between(relative));
+  return residual.dot(covariance.ldlt().solve(residual));
+}
+
 }  // namespace
 
 ResidualAccumulator::ResidualAccumulator(const LogHeader& header) : header_(header) {
@@ -188,6 +209,39 @@ void ResidualAccumulator::add(const TimeStep& step) {
   }
   first_ = false;
   previousTruePose_ = step.truePose;
+  window_.push_back({step.odometry, step.truePose});
+  if (window_.size() > static_cast<std::size_t>(kOdometryWindowSteps.back()) + 1) window_.pop_front();
+  addWindows();
+}
+
+void ResidualAccumulator::addWindows() {
+  const WindowEntry& last = window_.back();
+  if (!last.truePose) return;
+  const int dimension = header_.dimension == 3 ? SE3::kDim : SE2::kDim;
+  const double quantile = chiSquareQuantile(0.95, dimension);
+  for (std::size_t w = 0; w < kOdometryWindowSteps.size(); ++w) {
+    const std::size_t n = static_cast<std::size_t>(kOdometryWindowSteps[w]);
+    if (window_.size() < n + 1) continue;
+    const WindowEntry& start = window_[window_.size() - 1 - n];
+    if (!start.truePose) continue;
+    std::vector<const Odometry*> odometry;
+    for (std::size_t i = window_.size() - n; i < window_.size(); ++i) {
+      if (!window_[i].odometry) break;
+      odometry.push_back(&*window_[i].odometry);
+    }
+    if (odometry.size() != n) continue;  // a step without odometry inside the window
+    std::optional<double> nees;
+    if (const auto* a = std::get_if<SE2>(&*start.truePose)) {
+      if (const auto* b = std::get_if<SE2>(&*last.truePose)) nees = composedOdometryNees(odometry, a->between(*b));
+    } else if (const auto* a3 = std::get_if<SE3>(&*start.truePose)) {
+      if (const auto* b3 = std::get_if<SE3>(&*last.truePose)) nees = composedOdometryNees(odometry, a3->between(*b3));
+    }
+    if (!nees) continue;
+    WindowSums& sums = windowSums_[w];
+    ++sums.windows;
+    sums.nees += *nees;
+    sums.inside += *nees <= quantile;
+  }
 }
 
 LogResidualStatistics ResidualAccumulator::statistics() const {
@@ -199,6 +253,17 @@ LogResidualStatistics ResidualAccumulator::statistics() const {
   }
   for (std::size_t i = 0; i < odometry_.size(); ++i) {
     result.odometry.push_back(summarise(odometryNames[i], odometry_[i].residual, odometry_[i].variance));
+  }
+  for (std::size_t w = 0; w < kOdometryWindowSteps.size(); ++w) {
+    OdometryWindowStatistics window;
+    window.steps = kOdometryWindowSteps[w];
+    window.dimension = header_.dimension == 3 ? SE3::kDim : SE2::kDim;
+    window.windows = windowSums_[w].windows;
+    if (window.windows > 0) {
+      window.meanNees = windowSums_[w].nees / static_cast<double>(window.windows);
+      window.withinQuantile = static_cast<double>(windowSums_[w].inside) / static_cast<double>(window.windows);
+    }
+    result.odometryWindows.push_back(window);
   }
   return result;
 }
@@ -235,6 +300,22 @@ std::string formatResidualStatistics(const LogResidualStatistics& statistics) {
                 statistics.odometryEvaluated, statistics.odometryWithoutTruePoses);
   text += line;
   table("odometry", statistics.odometry);
+  if (!statistics.odometryWindows.empty()) {
+    const int dimension = statistics.odometryWindows.front().dimension;
+    std::snprintf(line, sizeof line,
+                  "odometry over windows of n steps (composed; every start step, so windows overlap; white noise as "
+                  "stated gives a mean NEES of %d and 0.95 inside the chi2 95 %% quantile):\n",
+                  dimension);
+    text += line;
+    std::snprintf(line, sizeof line, "%-10s %-10s %8s %11s %11s\n", "odometry", "n steps", "windows", "mean NEES",
+                  "inside 95%");
+    text += line;
+    for (const OdometryWindowStatistics& w : statistics.odometryWindows) {
+      std::snprintf(line, sizeof line, "%-10s %-10d %8zu %11.3f %11.3f\n", "", w.steps, w.windows, w.meanNees,
+                    w.withinQuantile);
+      text += line;
+    }
+  }
   return text;
 }
 

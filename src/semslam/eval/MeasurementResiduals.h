@@ -10,13 +10,25 @@
 // in the tangent of the right perturbation (translation first), the same error as a between factor's, so its
 // covariance is the stated odometry covariance.
 //
+// Odometry over windows: per-step statistics cannot show errors that are correlated in time (a heading bias of a
+// few tenths of a degree per step is invisible beside a step's σ, yet turns the map by tens of degrees over a loop).
+// So the increments of every n consecutive steps (n in kOdometryWindowSteps, every start step, so windows overlap)
+// are composed, Z = Z_1 ⋯ Z_n, with the covariance propagated to first order in the right perturbation,
+//     Σ ← Ad(Z_i⁻¹) Σ Ad(Z_i⁻¹)ᵀ + Σ_i      (since T Exp(ε) Z_i = T Z_i Exp(Ad(Z_i⁻¹) ε)),
+// and compared with the true relative pose of the window's ends: r = Log(Z⁻¹ · x_{k−n}⁻¹ x_k), NEES = rᵀ Σ⁻¹ r.
+// White noise as stated gives a mean NEES of d (3 in 2D, 6 in 3D) at every n and 95 % of windows inside the χ²_d
+// 95 % quantile; a mean that grows with n says the stated noise holds per step and fails over a loop.
+//
 // Per component the statistics are: the count; mean and (population) standard deviation of r_i; the median and the
 // robust standard deviation 1.4826 · median |r_i − median| (equal to the std for Gaussian residuals, insensitive to
 // outliers); the stated standard deviation, sqrt(mean over residuals of Σ_ii) (the RMS of the stated sigmas, which
 // vary per detection or step in some logs); and the standard deviation of the normalised residuals r_i / sqrt(Σ_ii)
 // (1 when the stated noise is right, whatever its variation). Components with no residual have count 0 and zeros.
 
+#include <array>
 #include <cstddef>
+#include <deque>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,6 +49,18 @@ struct ComponentResidualStatistics {
                                ///< the data as its Gaussian would (well below: the gate and likelihoods are too narrow)
 };
 
+/// The window lengths of the odometry's consistency over windows (steps): one step, and the decades above it, up to
+/// the horizon of a loop closure in the project's real logs (a hundred 1 s keyframes).
+inline constexpr std::array<int, 3> kOdometryWindowSteps = {1, 10, 100};
+
+struct OdometryWindowStatistics {
+  int steps = 0;                ///< n
+  int dimension = 0;            ///< d, the odometry's tangent dimension
+  std::size_t windows = 0;      ///< windows evaluated: n consecutive steps with odometry, true poses at both ends
+  double meanNees = 0.0;        ///< expected: the tangent dimension d
+  double withinQuantile = 0.0;  ///< fraction with NEES ≤ the χ²_d 95 % quantile: 0.95 when consistent
+};
+
 struct LogResidualStatistics {
   std::vector<ComponentResidualStatistics> detection;  ///< one per geometry component
   std::vector<ComponentResidualStatistics> odometry;   ///< one per tangent component
@@ -48,6 +72,7 @@ struct LogResidualStatistics {
   std::size_t detectionsUndefined = 0;        ///< the prediction is undefined (landmark at the sensor)
   std::size_t odometryEvaluated = 0;
   std::size_t odometryWithoutTruePoses = 0;  ///< this or the previous step has no true pose
+  std::vector<OdometryWindowStatistics> odometryWindows;  ///< one per kOdometryWindowSteps entry
 };
 
 /// Accumulates residuals step by step (for logs read with MeasurementLogReader).
@@ -61,12 +86,23 @@ class ResidualAccumulator {
   struct Samples {
     std::vector<double> residual, variance;
   };
+  struct WindowEntry {  // one step of the odometry window: its odometry (none for the first step) and true pose
+    std::optional<Odometry> odometry;
+    std::optional<Pose> truePose;
+  };
+  struct WindowSums {
+    std::size_t windows = 0, inside = 0;
+    double nees = 0.0;
+  };
+  void addWindows();
   LogHeader header_;
   std::vector<Samples> detection_;
   std::vector<Samples> odometry_;
   LogResidualStatistics counts_;
   std::optional<Pose> previousTruePose_;
   bool first_ = true;
+  std::deque<WindowEntry> window_;  // the last max(kOdometryWindowSteps) + 1 steps
+  std::array<WindowSums, kOdometryWindowSteps.size()> windowSums_;
 };
 
 /// The residual statistics of a whole log.
