@@ -18,6 +18,12 @@ void addRunMethodOptions(CLI::App* command, RunMethodArguments& arguments) {
   command->add_option("--smoother", arguments.smoother,
                       "back end: incremental or batch (default: incremental for known..mm-nh, batch for hybrid)")
       ->check(CLI::IsMember({"incremental", "batch"}));
+  command->add_option("--switch-rounds", arguments.options.switchRounds,
+                      "mm, mm-nh, incremental back end: after an update, a max-mixture whose component at the new "
+                      "estimate differs is relinearized there and the update solved again, up to this many times "
+                      "(0: off; docs/association-front-end.md §6)")
+      ->check(CLI::Range(0, 1000))
+      ->capture_default_str();
   addSemanticSlamOptions(command, arguments.options.slam);
   command->add_flag("--no-covariances", arguments.noCovariances,
                     "skip the marginal covariance of every pose (no NEES, no ellipses; faster)");

@@ -181,7 +181,10 @@ TEST(RunCommand, LoopClosureBranchesAreListedInBranchesCsv) {
   // Branches need the joint assignment, factors that are the likelihood, and a window of at least 0 steps.
   for (const std::string flags :
        {"--method known --loop-closure-branches 8", "--method gpda --loop-closure-branches 8",
-        "--method mm-nh --birth threshold --loop-closure-branches 8", "--method mm-nh --loop-closure-branches -1"}) {
+        "--method mm-nh --birth threshold --loop-closure-branches 8", "--method mm-nh --loop-closure-branches -1",
+        // Switch rounds (RunMethod.h): a mixture to switch and the incremental back end.
+        "--method ml --switch-rounds 5", "--method mm --smoother batch --switch-rounds 5",
+        "--method mm-nh --switch-rounds -1"}) {
     EXPECT_EQ(runSemslam("run " + flags + " --in \"" + log.string() + "\" --out \"" + (dir / "bad").string() + "\"")
                   .exitCode,
               2)

@@ -21,7 +21,11 @@ void runSemanticSlam(const MeasurementLog& log, const MethodOptions& options, co
                      MethodRun& run) {
   SemanticSlamOptions slamOptions = options.slam;
   slamOptions.strategy = associationStrategy(options.method);
-  if (options.smoother) slamOptions.smoother = smootherFactory(*options.smoother);
+  if (options.smoother || options.switchRounds > 0) {
+    IncrementalSmootherParams incremental;
+    incremental.maxSwitchRounds = options.switchRounds;
+    slamOptions.smoother = smootherFactory(options.smoother.value_or(SmootherKind::Incremental), {}, incremental);
+  }
 
   const auto start = std::chrono::steady_clock::now();
   LoopClosureBranches branches(log.header, slamOptions);  // one branch throughout unless a window is set
@@ -100,6 +104,17 @@ void runHybridBelief(const MeasurementLog& log, const MethodOptions& options, co
 }  // namespace
 
 MethodRun runMethod(const MeasurementLog& log, const MethodOptions& options, const RunProgress& progress) {
+  if (options.switchRounds < 0) throw std::invalid_argument("switch rounds must be >= 0");
+  if (options.switchRounds > 0) {
+    if (options.method != Method::MaxMixture && options.method != Method::MaxMixtureNullHypothesis) {
+      throw std::invalid_argument("switch rounds apply to mm and mm-nh: " + methodName(options.method) +
+                                  " has no max-mixture to switch");
+    }
+    if (options.smoother == SmootherKind::Batch) {
+      throw std::invalid_argument("switch rounds apply to the incremental back end: the batch back end re-chooses "
+                                  "every mixture at every Gauss-Newton iterate");
+    }
+  }
   MethodRun run;
   run.method = options.method;
   run.hasRunFolder = options.runFolder;

@@ -9,7 +9,10 @@
 //                                    strategy is the method's. Back end: the incremental smoother.
 //   hybrid | hybrid-geometric        paper A's hybrid belief (hybrid/HybridRun.h) with `options.hybrid`;
 //                                    useSemantics is the method's. Back end: batch Levenberg-Marquardt.
-// `options.smoother`, when set, replaces the method's back end.
+// `options.smoother`, when set, replaces the method's back end. `options.switchRounds` > 0 lets the incremental
+// back end re-choose max-mixture components at its new estimate (IncrementalSmootherParams::maxSwitchRounds,
+// docs/association-front-end.md §6): only for mm and mm-nh (no other method has a mixture to switch) on the
+// incremental back end (the batch one re-chooses at every Gauss-Newton iterate anyway); elsewhere it is refused.
 //
 // The run folder (`output`, written by writeMethodRun): metrics.json (io/RunMetricsFile.h), trajectory.tum,
 // truth.tum, landmarks.csv, landmarks_truth.csv, covariances.csv, associations.csv (io/RunFolder.h), and for the
@@ -43,6 +46,7 @@ namespace semslam {
 struct MethodOptions {
   Method method = Method::MaxMixtureNullHypothesis;
   std::optional<SmootherKind> smoother;  ///< empty: the method's default back end (above)
+  int switchRounds = 0;                  ///< incremental back end, mm and mm-nh: IncrementalSmootherParams::maxSwitchRounds
   SemanticSlamOptions slam;              ///< paper B's methods (`strategy` and `smoother` are set from the above)
   HybridOptions hybrid;                  ///< paper A's methods (`useSemantics` is set from the method)
   bool poseCovariances = true;           ///< paper B: the marginal covariance of every pose (NEES, ellipses)

@@ -32,6 +32,7 @@
 //                         ATE to the batch back end's, make mm much worse (KITTI 00: 39 m → 186 m; MRCLAM robot 1:
 //                         0.24 → 0.61 m) and cost up to 19× more CPU (Lost in the Woods mm-nh), so it stays opt-in
 //                         until a switch is accepted only when it lowers the cost, as a batch Gauss-Newton step is.
+//                         `semslam run --switch-rounds N` sets it (MethodOptions::switchRounds).
 //                         A graph without mixtures is solved bit for bit the same whatever the value.
 
 namespace semslam {

@@ -17,8 +17,11 @@ SmootherKind parseSmootherKind(std::string_view name) {
   throw std::invalid_argument("unknown smoother '" + std::string(name) + "' (incremental, batch)");
 }
 
-SmootherFactory smootherFactory(SmootherKind kind, const OptimizerParams& batchParams) {
-  if (kind == SmootherKind::Incremental) return [] { return std::make_unique<IncrementalSmoother>(); };
+SmootherFactory smootherFactory(SmootherKind kind, const OptimizerParams& batchParams,
+                                const IncrementalSmootherParams& incrementalParams) {
+  if (kind == SmootherKind::Incremental) {
+    return [incrementalParams] { return std::make_unique<IncrementalSmoother>(incrementalParams); };
+  }
   return [batchParams] { return std::make_unique<BatchSmoother>(batchParams); };
 }
 

@@ -3,7 +3,8 @@
 // component and the max-mixture pipeline one per run) and what the command line offers (`--smoother`).
 //
 //   incremental  IncrementalSmoother (iSAM2-style Bayes tree, docs/incremental-smoother.md): each update costs
-//                what it touches; the default of the max-mixture pipeline;
+//                what it touches; the default of the max-mixture pipeline; configured by IncrementalSmootherParams
+//                (e.g. maxSwitchRounds, `semslam run --switch-rounds`);
 //   batch        BatchSmoother: re-solves the whole graph at every update with the given optimiser settings.
 
 #include <functional>
@@ -11,6 +12,7 @@
 #include <string>
 #include <string_view>
 
+#include "semslam/solve/IncrementalSmootherParams.h"
 #include "semslam/solve/Optimizer.h"
 #include "semslam/solve/Smoother.h"
 
@@ -25,7 +27,9 @@ std::string smootherKindName(SmootherKind kind);
 /// The inverse of smootherKindName; throws std::invalid_argument naming the valid choices.
 SmootherKind parseSmootherKind(std::string_view name);
 
-/// A factory of smoothers of `kind`; `batchParams` configure the batch smoother's optimiser.
-SmootherFactory smootherFactory(SmootherKind kind, const OptimizerParams& batchParams = {});
+/// A factory of smoothers of `kind`; `batchParams` configure the batch smoother's optimiser, `incrementalParams`
+/// the incremental smoother.
+SmootherFactory smootherFactory(SmootherKind kind, const OptimizerParams& batchParams = {},
+                                const IncrementalSmootherParams& incrementalParams = {});
 
 }  // namespace semslam
