@@ -17,6 +17,7 @@ import tempfile
 
 import plot_hybrid
 import results_association
+import results_backends
 import results_commands
 import results_association_defaults
 import results_hybrid_mrclam
@@ -310,7 +311,7 @@ def bounded_memory_lines(semslam, data, scratch, litw):
 
 SECTIONS = ["pose-graphs", "evo", "datasets", "hybrid", "hybrid-mrclam", "hybrid-scaling", "max-mixtures",
             "robustness", "association", "association-defaults", "loop-closure-branches", "kitti-tracking",
-            "studies-mpi"]
+            "back-ends", "studies-mpi"]
 
 
 def section_lines(name, semslam, data, scratch):
@@ -339,6 +340,8 @@ def section_lines(name, semslam, data, scratch):
     elif name == "kitti-tracking":
         body = results_kitti_tracking.kitti_tracking_section(semslam, data, scratch,
                                                              lambda command: shown(command, data), sys.executable)
+    elif name == "back-ends":
+        body = results_backends.backends_section(semslam, data, scratch, lambda command: shown(command, data))
     elif name == "hybrid-scaling":
         body = results_hybrid_scaling.hybrid_scaling_section(semslam, data, scratch, lambda command: shown(command, data))
     elif name == "hybrid-mrclam":
@@ -364,12 +367,20 @@ def kept_section(text, name):
 
 
 def splice(text, name, lines):
-    """Replaces section `name` of an existing results.md (or appends it)."""
+    """Replaces section `name` of an existing results.md. A section the file does not hold yet goes where a full
+    regeneration would put it: before the first later section (SECTIONS, then KEPT_SECTIONS) the file holds, or at
+    the end."""
     begin, end = f"<!-- section:{name} -->", f"<!-- end:{name} -->"
     if begin in text and end in text:
         head, rest = text.split(begin, 1)
         tail = rest.split(end, 1)[1].lstrip("\n")
         return head + "\n".join(lines) + tail
+    order = SECTIONS + KEPT_SECTIONS
+    for later in order[order.index(name) + 1:]:
+        marker = f"<!-- section:{later} -->"
+        if marker in text:
+            head, tail = text.split(marker, 1)
+            return head + "\n".join(lines) + "\n" + marker + tail
     return text.rstrip("\n") + "\n\n" + "\n".join(lines)
 
 

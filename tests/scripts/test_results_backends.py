@@ -1,0 +1,49 @@
+"""python/results_backends.py (docs/results.md section back-ends, issue 10's back-end target) on hand-made metrics:
+the bound max(10 %, 0.02 m) at both of its regimes, the rows' pairing of the two back ends, the speed-up, and the
+summary's counts. Needs no data and no semslam binary."""
+import os
+import sys
+import unittest
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+import results_backends as section  # noqa: E402
+
+
+def metrics(ate, da, seconds):
+    return {"ate_rmse": ate, "da_accuracy_real": da, "time_s": seconds}
+
+
+class Backends(unittest.TestCase):
+    def test_the_bound_is_ten_percent_or_two_centimetres_whichever_is_larger(self):
+        self.assertTrue(section.within(1.09, 1.0))    # 10 % of 1 m
+        self.assertFalse(section.within(1.11, 1.0))
+        self.assertTrue(section.within(0.919, 0.9))   # the same on the other side
+        self.assertTrue(section.within(0.119, 0.1))   # 2 cm, above 10 % of 0.1 m
+        self.assertFalse(section.within(0.121, 0.1))
+
+    def test_rows_pair_the_back_ends_and_count_the_target(self):
+        results = {
+            ("A", "ml", "incremental"): metrics(1.0, 0.9, 0.5),
+            ("A", "ml", "batch"): metrics(1.05, 0.8, 25.0),       # within, 50 ×
+            ("A", "mm-nh", "incremental"): metrics(2.0, None, 1.0),
+            ("A", "mm-nh", "batch"): metrics(1.0, None, 5.0),     # not within, 5 ×
+            ("B", "ml", "incremental"): metrics(0.10, 1.0, 0.2),
+            ("B", "ml", "batch"): metrics(0.115, 1.0, 2.0),       # within by the 2 cm, 10 ×
+            ("C", "ml", "incremental"): metrics(0.3, 1.0, 0.1),   # no batch run: no row
+        }
+        rows = section.backend_rows(results)
+        self.assertEqual([(r["log"], r["method"]) for r in rows], [("A", "ml"), ("A", "mm-nh"), ("B", "ml")])
+        self.assertEqual([r["within"] for r in rows], [True, False, True])
+        self.assertEqual([r["speedup"] for r in rows], [50.0, 5.0, 10.0])
+        self.assertEqual(rows[0]["da"], (0.9, 0.8))
+        self.assertEqual(section.summary(rows), "Within max(10 %, 0.02 m) of the batch back end on 2 of 3 runs, at "
+                                                "least 20 × faster on 1, both on 1.")
+        lines = section.table(rows)
+        self.assertEqual(len(lines), 2 + 3)
+        self.assertEqual(lines[3], "| A | mm-nh | 2.000 | 1.000 | no | – / – | 1.00 / 5.00 | 5.0 × |")
+        for line in lines:
+            self.assertEqual(line.count("|"), lines[0].count("|"), line)
+
+
+if __name__ == "__main__":
+    unittest.main()
