@@ -63,6 +63,11 @@ void addSemanticSlamOptions(CLI::App* command, SemanticSlamOptions& options) {
   command->add_flag("--no-null-escape{false}", options.nullEscape,
                     "mm-nh: keep a landmark's detections on the null hypothesis even where trying them on it "
                     "together lowers the objective (docs/association-front-end.md §6b)");
+  command->add_option("--null-escape-window", options.nullEscapeWindow,
+                      "mm-nh: also try a landmark's single detection on the null hypothesis when the landmark was "
+                      "seen off null at most this many seconds before it (0: off; docs/association-front-end.md §6c)")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
   command->add_flag("--label-split", options.labelSplit,
                     "birth unassigned: split a landmark whose labels say it holds two objects "
                     "(docs/association-front-end.md §5d)");

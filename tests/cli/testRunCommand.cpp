@@ -184,7 +184,9 @@ TEST(RunCommand, LoopClosureBranchesAreListedInBranchesCsv) {
         "--method mm-nh --birth threshold --loop-closure-branches 8", "--method mm-nh --loop-closure-branches -1",
         // Switch rounds (RunMethod.h): a mixture to switch and the incremental back end.
         "--method ml --switch-rounds 5", "--method mm --smoother batch --switch-rounds 5",
-        "--method mm-nh --switch-rounds -1"}) {
+        "--method mm-nh --switch-rounds -1",
+        // The null escape window (SemanticSlam.h): seconds >= 0, and the escape it widens on.
+        "--method mm-nh --null-escape-window -1", "--method mm-nh --no-null-escape --null-escape-window 1"}) {
     EXPECT_EQ(runSemslam("run " + flags + " --in \"" + log.string() + "\" --out \"" + (dir / "bad").string() + "\"")
                   .exitCode,
               2)

@@ -8,10 +8,10 @@
 
 #include <stdexcept>
 
-#include "semslam/io/convert/DatasetConverters.h"
 #include "semslam/run/RunMethod.h"
 #include "semslam/sim/GeneratedPath.h"
 #include "semslam/sim/SemanticSimulator.h"
+#include "support/KittiTrackingReadout.h"
 #include "support/TestData.h"
 
 namespace semslam {
@@ -71,13 +71,7 @@ TEST(SwitchRounds, ZeroIsTheDefaultRunBitForBit) {
 
 TEST(SwitchRounds, PutTheParkedCarsOfKittiTracking0003BackOnTheirLandmarks) {
   SEMSLAM_REQUIRE_DATA(folder, "kitti-tracking");
-  ConvertOptions convert;
-  convert.keyframePeriod = 1.0;
-  convert.seed = 1;
-  convert.kitti.sequence = 3;
-  convert.kitti.odometry = KittiTrackingOptions::Odometry::Noisy;
-  convert.kitti.odometryNoiseScale = 5.0;
-  const MeasurementLog log = convertDataset("kitti-tracking", folder.string(), convert);
+  const MeasurementLog log = test::kittiTrackingReadoutLog(folder, 3);
   const double without = runWith(log, Method::MaxMixtureNullHypothesis, 0).evaluation.metrics.daAccuracyReal;
   const double with = runWith(log, Method::MaxMixtureNullHypothesis, 5).evaluation.metrics.daAccuracyReal;
   const double batch =

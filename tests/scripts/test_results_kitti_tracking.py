@@ -2,8 +2,9 @@
 version: the first 20 keyframes of sequence 0009 at 1 Hz (30 static cars, moving ones and false positives), noise
 ×5 and orbslam, two methods (ml, mm-nh). Checks the
 rows' columns and sane values, the tables' columns, paired seeds (the same command twice gives the same metrics), and
-that ATE/RPE are shown for noisy odometry only; and, on hand-made associations.csv files (run even without the data),
-the read-out's count of detections on which ml and mm-nh disagree about being on a landmark at all.
+that ATE/RPE are shown for noisy odometry only; and, on hand-made associations.csv files and rows (run even without
+the data), the read-out's count of detections on which ml and mm-nh disagree about being on a landmark at all, and
+the read-out with the null escape window.
 
 Usage: test_results_kitti_tracking.py SEMSLAM_BINARY SHARED_DATA_DIR
 Skips (exit 77, ctest's SKIP_RETURN_CODE) with a message when SHARED_DATA_DIR/kitti-tracking is absent.
@@ -142,12 +143,40 @@ class NullDisagreements(unittest.TestCase):
                 study.null_disagreements(os.path.join(scratch, "ml"), os.path.join(scratch, "other"))
 
 
+class WindowReadout(unittest.TestCase):
+    """window_lines on hand-made rows: the read-out takes mm-nh from the window's runs and ml from the default's,
+    and the table shows mm-nh without and with the window per configuration."""
+
+    @staticmethod
+    def row(sequence, config, method, da, moving, ate=1.0):
+        return {"sequence": sequence, "config": config, "method": method, "run": f"{sequence}/{method}",
+                "da_accuracy_real": da, "clutter_rejected_moving": moving, "clutter_rejected_false_positive": 0.5,
+                "ate_rmse": ate, "time_s": 0.25}
+
+    def test_mm_nh_from_the_window_runs_against_ml_from_the_default_runs(self):
+        ten_hz = study.WINDOW_CONFIGS[1]
+        rows = [self.row(s, study.READOUT, "ml", 0.8, 0.7) for s in study.SEQUENCES]
+        rows += [self.row(s, study.READOUT, "mm-nh", 0.6, 0.9) for s in study.SEQUENCES]
+        rows += [self.row(s, ten_hz, "mm-nh", 0.9, 0.9, ate=2.0) for s in study.SEQUENCES]
+        window = [self.row(s, study.READOUT, "mm-nh", 0.8, 0.75) for s in study.SEQUENCES]
+        window += [self.row(s, ten_hz, "mm-nh", 0.95, 0.85, ate=3.0) for s in study.SEQUENCES]
+        text = "\n".join(study.window_lines(rows, window))
+        self.assertIn("mean `da_accuracy_real` 0.800, moving clutter rejected 0.750, no worse than ml on both on "
+                      "11 of 11 sequences.", text)
+        self.assertIn("| 1 Hz, noisy ×5 | off (default) | 0.600 | 0.900 | 0.500 | 1.000 | 2.8 |", text)
+        self.assertIn("| 1 Hz, noisy ×5 | 1 s | 0.800 | 0.750 | 0.500 | 1.000 | 2.8 |", text)
+        self.assertIn("| 10 Hz, noisy ×5 | off (default) | 0.900 | 0.900 | 0.500 | 2.000 | 2.8 |", text)
+        self.assertIn("| 10 Hz, noisy ×5 | 1 s | 0.950 | 0.850 | 0.500 | 3.000 | 2.8 |", text)
+
+
 if __name__ == "__main__":
     if len(sys.argv) != 3:
         sys.exit("usage: test_results_kitti_tracking.py SEMSLAM_BINARY SHARED_DATA_DIR")
     SEMSLAM, DATA = sys.argv[1], sys.argv[2]
     if not os.path.isdir(os.path.join(DATA, "kitti-tracking")):
-        hand_made = unittest.TextTestRunner().run(unittest.TestLoader().loadTestsFromTestCase(NullDisagreements))
+        loader = unittest.TestLoader()
+        hand_made = unittest.TextTestRunner().run(unittest.TestSuite(
+            [loader.loadTestsFromTestCase(NullDisagreements), loader.loadTestsFromTestCase(WindowReadout)]))
         if not hand_made.wasSuccessful():
             sys.exit(1)
         print(f"skipped (the hand-made tests above passed): shared dataset not found: "

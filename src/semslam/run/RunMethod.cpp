@@ -115,6 +115,9 @@ MethodRun runMethod(const MeasurementLog& log, const MethodOptions& options, con
                                   "every mixture at every Gauss-Newton iterate");
     }
   }
+  if (options.slam.nullEscapeWindow != 0.0 && !options.slam.nullEscape) {  // (mm-nh's, like its other options)
+    throw std::invalid_argument("the null escape window widens the null escape, which --no-null-escape turns off");
+  }
   MethodRun run;
   run.method = options.method;
   run.hasRunFolder = options.runFolder;

@@ -88,6 +88,9 @@ SemanticSlam::SemanticSlam(const LogHeader& header, SemanticSlamOptions options)
   }
   if (!(options_.nullSigmaScale >= 1.0)) throw std::invalid_argument("null-hypothesis sigma scale must be >= 1");
   if (options_.emWindow < 1 || options_.emIterations < 0) throw std::invalid_argument("bad EM window or iterations");
+  if (!(options_.nullEscapeWindow >= 0.0 && std::isfinite(options_.nullEscapeWindow))) {
+    throw std::invalid_argument("null escape window must be a finite number of seconds >= 0");
+  }
 }
 
 int SemanticSlam::addLandmark(const Value& value, std::optional<int> truthId, Values& values,
@@ -336,11 +339,25 @@ std::vector<std::size_t> SemanticSlam::assignedRecordsOnNull(int landmark) const
   std::vector<std::size_t> onNull;
   for (std::size_t r : recordsOn(landmark)) {
     const DetectionRecord& record = records_[r];
-    if (!record.mixture || record.assigned != landmark || record.factors.size() != 1) continue;
-    const int active = record.mixture->activeComponent(smoother_->estimate());
-    if (active >= static_cast<int>(record.candidates.size())) onNull.push_back(r);  // the null component is last
+    if (record.assigned == landmark && onNullComponent(record)) onNull.push_back(r);
   }
   return onNull;
+}
+
+bool SemanticSlam::onNullComponent(const DetectionRecord& record) const {
+  if (!record.mixture || record.factors.size() != 1) return false;  // no mixture in force (a plain factor, or none)
+  const int active = record.mixture->activeComponent(smoother_->estimate());
+  return active >= static_cast<int>(record.candidates.size());  // the null component is last
+}
+
+std::optional<double> SemanticSlam::lastSightingOffNull(int landmark, std::size_t lone) const {
+  const std::vector<std::size_t> on = recordsOn(landmark);  // in step order
+  for (auto r = on.rbegin(); r != on.rend(); ++r) {
+    const DetectionRecord& record = records_[*r];
+    if (record.step >= records_[lone].step) continue;
+    if (!onNullComponent(record)) return stepTimes_[static_cast<std::size_t>(record.step)];
+  }
+  return std::nullopt;
 }
 
 bool SemanticSlam::escapeNullBasins(int k) {
@@ -356,7 +373,13 @@ bool SemanticSlam::escapeNullBasins(int k) {
   for (int j : seen) {
     const std::vector<std::size_t> onNull = assignedRecordsOnNull(j);
     std::size_t& tried = nullsTried_[static_cast<std::size_t>(j)];
-    if (onNull.size() < 2 || onNull.size() <= tried) continue;  // a lone outlier, or no news since the last try
+    if (onNull.empty() || onNull.size() <= tried) continue;  // no news since the last try
+    if (onNull.size() == 1) {  // an outlier, unless the landmark was seen off null just before it (§6c)
+      if (options_.nullEscapeWindow <= 0.0) continue;
+      const std::optional<double> last = lastSightingOffNull(j, onNull[0]);
+      const double loneTime = stepTimes_[static_cast<std::size_t>(records_[onNull[0]].step)];
+      if (!last || loneTime - *last > options_.nullEscapeWindow) continue;
+    }
     tried = onNull.size();
     // The unchanged graph, converged, against the trial: the same factors, the null detections first held on the
     // landmark, then given their mixtures back at the estimate that pulled (step 7 of the class comment).

@@ -50,6 +50,9 @@
 //      below the cost of the unchanged graph converged alike. Each acceptance lowers F: the escape only ever moves
 //      the estimate to a better optimum of paper B's own objective, out of the basin where a drifted estimate has
 //      put a landmark's re-sightings beyond the null hypothesis's break-even and nothing pulls it back.
+//      With nullEscapeWindow T > 0 (§6c), a single detection on null is tried as well when the landmark had a
+//      detection off null at most T seconds before it: within a tracked object's stream of sightings, one on null
+//      says the estimate lags, as two do; after a long gap a lone detection stays what the null hypothesis is for.
 // Decisions where paper B is silent are in docs/max-mixtures.md.
 //
 // A step is processed in two halves, beginStep (steps 1-2, the joint assignment found but not applied) and
@@ -115,6 +118,10 @@ struct SemanticSlamOptions {
   bool labelSplit = false;        ///< BirthRule::Unassigned: a landmark whose labels say it holds two objects
                                   ///< splits (LandmarkSplit.h); opt-in, measured in docs/association-front-end.md §5d
   bool nullEscape = true;         ///< mm-nh, BirthRule::Unassigned: step 7 above (docs/association-front-end.md §6b)
+  /// mm-nh with nullEscape: a landmark with a single detection on null is tried too when the landmark had a
+  /// detection off null at most this many seconds before it (a re-sighting of a tracked object, not a loop
+  /// closure); 0: never, two or more on null as in §6b (docs/association-front-end.md §6c; opt-in)
+  double nullEscapeWindow = 0.0;
   double anchoringInformation = 2.0;  ///< §10: a pairing anchors when ½ ln det(S R⁻¹) exceeds this (nats)
   /// §10 (LoopClosureBranches.h): steps a second branch is kept open after an anchoring step before the better one
   /// is kept; 0: no branches. Unset: LoopClosureBranches::kDefaultWindow where branches apply (BirthRule::Unassigned
@@ -287,6 +294,10 @@ class SemanticSlam {
   bool escapeNullBasins(int k);
   /// The records on `landmark` that the front end assigned to it and whose mixture is on its null component.
   std::vector<std::size_t> assignedRecordsOnNull(int landmark) const;
+  /// Whether the record's mixture is in force and on its null component at the estimate.
+  bool onNullComponent(const DetectionRecord& record) const;
+  /// §6c: the time of the newest step before record `lone`'s at which a detection was on `landmark` and off null.
+  std::optional<double> lastSightingOffNull(int landmark, std::size_t lone) const;
   FactorPtr gpdaFactor(const DetectionRecord& record, int landmark, double weight) const;
   /// E-step for one gpda record at the current estimate; returns whether any factor changed.
   bool reweight(DetectionRecord& record);
