@@ -13,7 +13,7 @@ time on the 2-core machine, each single-threaded, so the times are comparable).
 import concurrent.futures
 import os
 
-from results_commands import read_metrics, run_checked
+from results_commands import cell, read_metrics, run_checked
 from results_max_mixtures import kitti_simulation
 
 METHODS = ["ml", "mm-nh"]
@@ -32,11 +32,7 @@ def backend_rows(results):
     ATEs, whether they are within the bound, both `da_accuracy_real`, both times and their ratio (batch over
     incremental), in the order the logs were given."""
     rows = []
-    seen = []
-    for log, method, _ in results:
-        if (log, method) not in seen:
-            seen.append((log, method))
-    for log, method in seen:
+    for log, method in dict.fromkeys((log, method) for log, method, _ in results):  # first-seen order
         if (log, method, "incremental") not in results or (log, method, "batch") not in results:
             continue
         incremental, batch = results[(log, method, "incremental")], results[(log, method, "batch")]
@@ -51,16 +47,12 @@ def backend_rows(results):
     return rows
 
 
-def _cell(value, digits=3):
-    return "–" if value is None else f"{value:.{digits}f}"
-
-
 def table(rows):
     lines = ["| log | method | ATE incremental [m] | ATE batch [m] | within | da_accuracy_real incremental / batch | "
              "time incremental / batch [s] | batch / incremental |", "|---|---|---|---|---|---|---|---|"]
     for r in rows:
         lines.append(f"| {r['log']} | {r['method']} | {r['ate'][0]:.3f} | {r['ate'][1]:.3f} | "
-                     f"{'yes' if r['within'] else 'no'} | {_cell(r['da'][0])} / {_cell(r['da'][1])} | "
+                     f"{'yes' if r['within'] else 'no'} | {cell(r['da'][0])} / {cell(r['da'][1])} | "
                      f"{r['time'][0]:.2f} / {r['time'][1]:.2f} | "
                      f"{'–' if r['speedup'] is None else format(r['speedup'], '.1f') + ' ×'} |")
     return lines

@@ -1,6 +1,7 @@
 """What every docs/results.md section module (make_results.py) needs to run the tool: a command that must
-succeed, and a run folder's metrics."""
+succeed, a run folder's metrics, and table cells."""
 import json
+import math
 import os
 import statistics
 import subprocess
@@ -14,6 +15,13 @@ def run_checked(command):
     if result.returncode != 0:
         sys.exit(f"make_results.py: {' '.join(command)} failed:\n{result.stdout}{result.stderr}")
     return result.stdout
+
+
+def cell(value, digits=3):
+    """A table cell: a float to `digits` places, `–` for a missing (None) or NaN figure, anything else as text."""
+    if value is None or (isinstance(value, float) and math.isnan(value)):
+        return "–"
+    return f"{value:.{digits}f}" if isinstance(value, float) else str(value)
 
 
 def mean_cell(values, digits=3):

@@ -29,7 +29,7 @@ import sys
 import time
 from typing import NamedTuple, Optional
 
-from results_commands import run_checked
+from results_commands import cell, run_checked
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 METHODS = ["known", "ml", "gpda", "mm", "mm-nh"]
@@ -176,12 +176,6 @@ def run_study(semslam, folder, scratch, sequences=SEQUENCES, configs=CONFIGS, me
     return rows, {key: (path, log_counts(path)) for key, path in logs.items()}
 
 
-def _cell(value, digits=3):
-    if value is None or (isinstance(value, float) and math.isnan(value)):
-        return "–"
-    return f"{value:.{digits}f}" if isinstance(value, float) else str(value)
-
-
 def table_header():
     titles = ["keyframes", "odometry", "method"] + [t for _, t in ASSOCIATION_COLUMNS] + [
         "landmarks (true)"] + [t for _, t in TRAJECTORY_COLUMNS] + ["time [s]"]
@@ -190,10 +184,10 @@ def table_header():
 
 def table_row(row):
     cells = [row["config"].rate, row["config"].odometry, row["method"]]
-    cells += [_cell(row[key]) for key, _ in ASSOCIATION_COLUMNS]
-    cells.append(f"{_cell(row['landmarks_estimated'])} ({_cell(row['landmarks_true'])})")
-    cells += [_cell(row[key]) for key, _ in TRAJECTORY_COLUMNS]
-    cells.append(_cell(row["time_s"], 2))
+    cells += [cell(row[key]) for key, _ in ASSOCIATION_COLUMNS]
+    cells.append(f"{cell(row['landmarks_estimated'])} ({cell(row['landmarks_true'])})")
+    cells += [cell(row[key]) for key, _ in TRAJECTORY_COLUMNS]
+    cells.append(cell(row["time_s"], 2))
     return "| " + " | ".join(cells) + " |"
 
 
@@ -218,8 +212,8 @@ def summary_table(rows, sequences, configs, methods):
             cells = [config.rate, config.odometry, method]
             for key in keys:
                 value, n = mean([r[key] for r in selected])
-                cells.append(_cell(value) + ("" if n in (0, len(selected)) else f" ({n})"))
-            cells.append(_cell(mean([r["time_s"] for r in selected])[0], 2))
+                cells.append(cell(value) + ("" if n in (0, len(selected)) else f" ({n})"))
+            cells.append(cell(mean([r["time_s"] for r in selected])[0], 2))
             lines.append("| " + " | ".join(cells) + " |")
     return lines
 
@@ -313,7 +307,7 @@ def window_lines(rows, window_rows):
     lines = [f"With `semslam run --method mm-nh ... {' '.join(WINDOW_VARIANT)}` (opt-in; mm-nh's null escape also "
              "tries a landmark's single detection on null when the landmark was seen off null at most 1 s before "
              "it, docs/association-front-end.md §6c), the read-out is: mean `da_accuracy_real` "
-             f"{_cell(da)}, moving clutter rejected {_cell(moving)}, no worse than ml on both on "
+             f"{cell(da)}, moving clutter rejected {cell(moving)}, no worse than ml on both on "
              f"{r['compared'] - len(r['worse'])} of {r['compared']} sequences"
              + (" (" + "; ".join(f"{sequence_name(s)}: " + ", ".join(w) for s, w, _ in r["worse"]) + ")"
                 if r["worse"] else "") + ". Means over the sequences, default against the window:", "",
@@ -324,7 +318,7 @@ def window_lines(rows, window_rows):
             selected = [row for row in source if row["config"] == config and row["method"] == "mm-nh"]
             if not selected:
                 continue
-            cells = [_cell(mean([row[key] for row in selected])[0]) for key in
+            cells = [cell(mean([row[key] for row in selected])[0]) for key in
                      ("da_accuracy_real", "clutter_rejected_moving", "clutter_rejected_false_positive", "ate_rmse")]
             total = sum(row["time_s"] for row in selected if row["time_s"] is not None)
             lines.append(f"| {config.rate}, {config.odometry} | {label} | " + " | ".join(cells) + f" | {total:.1f} |")
@@ -344,9 +338,9 @@ def variant_table(rows, variant):
             cells = []
             for key in keys:
                 value, n = mean([r[key] for r in selected])
-                cells.append(_cell(value, 1 if key == "landmarks_estimated" else 3) +
+                cells.append(cell(value, 1 if key == "landmarks_estimated" else 3) +
                              ("" if n in (0, len(selected)) else f" ({n})"))
-            true_landmarks = _cell(mean([r["landmarks_true"] for r in selected])[0], 1)
+            true_landmarks = cell(mean([r["landmarks_true"] for r in selected])[0], 1)
             lines.append(f"| {method} | {label} | " + " | ".join(cells[:3]) + f" | {cells[3]} ({true_landmarks}) |")
     return lines
 
@@ -371,7 +365,7 @@ FIGURE_SEQUENCES = {"inside": 9, "outside": 1}
 # stated as such: after a change of the association front end they are the first thing to re-check.
 def _method_paragraph(rows):
     def m(method, key, config=READOUT, digits=3):
-        return _cell(mean([r[key] for r in rows if r["method"] == method and r["config"] == config])[0], digits)
+        return cell(mean([r[key] for r in rows if r["method"] == method and r["config"] == config])[0], digits)
 
     ten = Config(None, 5.0)
     ten_orb = Config(None, None)
@@ -459,9 +453,9 @@ def kitti_tracking_section(semslam, data, scratch, shown, python=None):
     no_worse = r["compared"] - len(r["worse"])
     lines += ["### The issue's read-out: 1 Hz keyframes, noise ×5, sequences 0000-0010", "",
               "| requirement | measured | met |", "|---|---|---|",
-              f"| mm-nh mean `da_accuracy_real` ≥ 0.9 | {_cell(da)} (over {da_n} sequences) | "
+              f"| mm-nh mean `da_accuracy_real` ≥ 0.9 | {cell(da)} (over {da_n} sequences) | "
               f"{'yes' if da is not None and da >= 0.9 else 'no'} |",
-              f"| mm-nh mean `clutter_rejected_moving` ≥ 0.8 | {_cell(moving)} (over {moving_n} sequences) | "
+              f"| mm-nh mean `clutter_rejected_moving` ≥ 0.8 | {cell(moving)} (over {moving_n} sequences) | "
               f"{'yes' if moving is not None and moving >= 0.8 else 'no'} |",
               f"| mm-nh no worse than ml on both, on ≥ 9 of 11 sequences | {no_worse} of {r['compared']} | "
               f"{'yes' if no_worse >= 9 else 'no'} |", ""]
