@@ -29,6 +29,9 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from log_geometry import world  # noqa: E402
+
 
 def read_tum(path):
     """Rows (x, y, z, qx, qy, qz, qw) of a TUM file, in order."""
@@ -49,21 +52,6 @@ def read_csv(path):
         return []
     with open(path, newline="") as f:
         return list(csv.DictReader(f))
-
-
-def rotate(q, p):
-    """The rotation of the unit quaternion q = (qx, qy, qz, qw) applied to p."""
-    x, y, z, w = q
-    px, py, pz = p
-    # v' = v + 2 w (u × v) + 2 u × (u × v), u = (x, y, z)
-    cx, cy, cz = y * pz - z * py, z * px - x * pz, x * py - y * px
-    ccx, ccy, ccz = y * cz - z * cy, z * cx - x * cz, x * cy - y * cx
-    return (px + 2 * (w * cx + ccx), py + 2 * (w * cy + ccy), pz + 2 * (w * cz + ccz))
-
-
-def world(pose, p):
-    r = rotate(pose[3:], p)
-    return (pose[0] + r[0], pose[1] + r[1], pose[2] + r[2])
 
 
 def read_log_detections(path):
