@@ -17,6 +17,7 @@ import tempfile
 
 import plot_hybrid
 import results_association
+import results_association_oracles
 import results_backends
 import results_commands
 import results_association_defaults
@@ -310,8 +311,8 @@ def bounded_memory_lines(semslam, data, scratch, litw):
 
 
 SECTIONS = ["pose-graphs", "evo", "datasets", "hybrid", "hybrid-mrclam", "hybrid-scaling", "max-mixtures",
-            "robustness", "association", "association-defaults", "loop-closure-branches", "kitti-tracking",
-            "back-ends", "studies-mpi"]
+            "robustness", "association", "association-oracles", "association-defaults", "loop-closure-branches",
+            "kitti-tracking", "back-ends", "studies-mpi"]
 
 
 def section_lines(name, semslam, data, scratch):
@@ -331,6 +332,9 @@ def section_lines(name, semslam, data, scratch):
         body = results_max_mixtures.robustness_sections(semslam, data, scratch, lambda command: shown(command, data))
     elif name == "association":
         body = results_association.association_section(semslam, data, scratch, lambda command: shown(command, data))
+    elif name == "association-oracles":
+        body = results_association_oracles.association_oracles_section(semslam, data, scratch,
+                                                                       lambda command: shown(command, data))
     elif name == "association-defaults":
         body = results_association_defaults.association_defaults_section(semslam, data, scratch)
     elif name == "loop-closure-branches":
