@@ -360,8 +360,9 @@ def ceiling_lines(logs, sequences, spacing=confirmation_ceiling.DEFAULT_SPACING)
             "them apart. A rule that kept every one would reach at most "
             f"{cell(keep_real)} on `da_accuracy_real` and at most {cell(keep_moving)} on moving clutter (means over "
             f"{moving_n} sequences; that only if it rejected every other moving detection, where mm-nh now keeps "
-            "some): the requirements ≥ 0.9 and ≥ 0.8 meet only at that edge "
-"(docs/association-front-end.md §5e).", ""]
+            "some); one that kept some of them, having nothing to choose them by, would keep moving clutter in "
+            f"about the proportion {total['moving_never_in_view_again']} : {total['real_never_in_view_again']} to "
+            "the real sightings it gains (docs/association-front-end.md §5e).", ""]
 
 
 def variant_table(rows, variant):

@@ -142,6 +142,7 @@ class Ceiling(unittest.TestCase):
         self.assertIn("Of those 3, 1 never come", text)
         self.assertIn("0 of the 1 moving-clutter and 1 of the 1 false-positive", text)
         self.assertIn("at most 0.600 on `da_accuracy_real` and at most 1.000 on moving clutter", text)
+        self.assertIn("in about the proportion 0 : 1 to the real sightings", text)
 
 
 if __name__ == "__main__":
