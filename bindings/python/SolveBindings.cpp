@@ -19,6 +19,7 @@
 #include "Bindings.h"
 #include "semslam/solve/BatchSmoother.h"
 #include "semslam/solve/IncrementalSmoother.h"
+#include "semslam/solve/LaplaceEvidence.h"
 #include "semslam/solve/Marginals.h"
 #include "semslam/solve/Optimizer.h"
 
@@ -104,6 +105,16 @@ void bindSolve(py::module_& module) {
       },
       py::arg("graph"), py::arg("initial"), py::arg("params") = OptimizerParams(),
       "Minimises the graph's objective from initial (Gauss-Newton by default).");
+
+  module.def(
+      "laplace_evidence_score",
+      [](FactorGraph graph, Values mode) {  // copies: see the file comment
+        py::gil_scoped_release release;
+        return laplaceEvidenceScore(graph, mode);
+      },
+      py::arg("graph"), py::arg("mode"),
+      "-2 ln of the graph's evidence by Laplace's approximation at its mode (solve/LaplaceEvidence.h): "
+      "sum of chi2 and normalisers at the mode, plus ln det of the Gauss-Newton information, minus N ln 2 pi.");
 
   py::class_<IncrementalSmootherParams>(module, "IncrementalSmootherParams",
                                         "Incremental smoother settings (solve/IncrementalSmootherParams.h).")

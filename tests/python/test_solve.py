@@ -194,6 +194,21 @@ def test_threads_sharing_one_smoother_take_turns():
                 np.testing.assert_allclose(covariance, expected, rtol=1e-9, atol=1e-15)
 
 
+def test_laplace_evidence_of_two_priors_on_a_point_is_their_closed_form():
+    # p(Z) = ∫ N(x; m1, s1² I) N(x; m2, s2² I) dx = N(m1 − m2; 0, (s1² + s2²) I): exact for linear factors.
+    m1, m2, s1, s2 = np.array([1.0, -2.0]), np.array([1.5, -1.0]), 0.3, 0.7
+    key = semslam.landmark_key(0)
+    graph = semslam.FactorGraph()
+    graph.add(semslam.PriorFactorPoint2(key, m1, semslam.NoiseModel.isotropic(2, s1)))
+    graph.add(semslam.PriorFactorPoint2(key, m2, semslam.NoiseModel.isotropic(2, s2)))
+    initial = semslam.Values()
+    initial.insert(key, np.zeros(2))
+    mode = semslam.optimize(graph, initial).values
+    variance = s1 ** 2 + s2 ** 2
+    expected = 2 * np.log(2 * np.pi * variance) + np.sum((m1 - m2) ** 2) / variance
+    assert semslam.laplace_evidence_score(graph, mode) == pytest.approx(expected, rel=1e-9)
+
+
 def test_values_behave_as_a_mapping():
     values = semslam.Values()
     values.insert(semslam.pose_key(2), semslam.SE2(1, 2, 3))
