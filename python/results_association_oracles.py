@@ -10,7 +10,7 @@ import concurrent.futures
 import os
 
 import oracle_logs
-from results_commands import cell, read_metrics, run_checked
+from results_commands import mean_cell, read_metrics, run_checked
 
 ROBOTS = [1, 2, 3, 4, 5]
 SEEDS = [1, 2, 3]
@@ -26,27 +26,23 @@ KEYS = ["da_accuracy_real", "ate_rmse", "clutter_rejected", "landmarks_split", "
         "landmarks_estimated"]
 
 
-def mean_of(values):
-    defined = [v for v in values if v is not None]
-    return sum(defined) / len(defined) if defined else None
-
-
 def table(results):
-    """Rows per variant, cells per robot and their mean, from {(variant label, robot, seed): metrics}."""
+    """Rows per variant: `da_accuracy_real` per robot (mean over its seeds) and over every run, and the other
+    figures' means over every run, from {(variant label, robot, seed): metrics}."""
     lines = ["| variant | " + " | ".join(f"robot {r}" for r in ROBOTS) + " | mean | ATE mean [m] | clutter rejected "
              "mean | split / merged (mean) | landmarks (true 15, mean) |",
              "|---|" + "---|" * len(ROBOTS) + "---|---|---|---|---|"]
     for label, _, _ in VARIANTS:
-        per_robot = [mean_of([results[(label, r, s)]["da_accuracy_real"] for s in SEEDS if (label, r, s) in results])
-                     for r in ROBOTS]
-        runs = [results[key] for key in results if key[0] == label]
+        runs = [metrics for key, metrics in results.items() if key[0] == label]
         if not runs:
             continue
-        means = {key: mean_of([m.get(key) for m in runs]) for key in KEYS}
-        lines.append(f"| {label} | " + " | ".join(cell(v) for v in per_robot) + f" | {cell(mean_of(per_robot))} | "
-                     f"{cell(means['ate_rmse'])} | {cell(means['clutter_rejected'])} | "
-                     f"{cell(means['landmarks_split'], 1)} / {cell(means['landmarks_merged'], 1)} | "
-                     f"{cell(means['landmarks_estimated'], 1)} |")
+        per_robot = [mean_cell([results[(label, r, s)]["da_accuracy_real"] for s in SEEDS if (label, r, s) in results])
+                     for r in ROBOTS]
+        means = {key: [m.get(key) for m in runs] for key in KEYS}
+        lines.append(f"| {label} | " + " | ".join(per_robot) + f" | {mean_cell(means['da_accuracy_real'])} | "
+                     f"{mean_cell(means['ate_rmse'])} | {mean_cell(means['clutter_rejected'])} | "
+                     f"{mean_cell(means['landmarks_split'], 1)} / {mean_cell(means['landmarks_merged'], 1)} | "
+                     f"{mean_cell(means['landmarks_estimated'], 1)} |")
     return lines
 
 
