@@ -97,19 +97,20 @@ def static_graph(header, steps, poses, detections, skip_landmark=None):
     return graph
 
 
-def initial_values(poses, landmarks):
+def initial_values(poses, landmarks, detections):
+    """The run's estimate of every pose and of every landmark some detection is on (the graph's variables)."""
     values = semslam.Values()
     for k, pose in enumerate(poses):
         values.insert(semslam.pose_key(k), semslam.SE2(*pose))
-    for landmark, position in landmarks.items():
-        values.insert(semslam.landmark_key(landmark), position)
+    for landmark in sorted({d[1] for d in detections}):
+        values.insert(semslam.landmark_key(landmark), landmarks[landmark])
     return values
 
 
 def random_walk_evidence(header, steps, poses, landmarks, detections, q):
     """{landmark id: Δ} for every landmark with at least 3 detections (Δ as in the module comment)."""
     base = static_graph(header, steps, poses, detections)
-    mode = semslam.optimize(base, initial_values(poses, landmarks)).values
+    mode = semslam.optimize(base, initial_values(poses, landmarks, detections)).values
     static_score = semslam.laplace_evidence_score(base, mode)
     result = {}
     for landmark in sorted(landmarks):
