@@ -8,9 +8,10 @@ are means over the three label seeds.
 """
 import concurrent.futures
 import os
+import sys
 
 import oracle_logs
-from results_commands import mean_cell, read_metrics, run_checked
+from results_commands import cell, mean_cell, read_metrics, run_checked
 
 ROBOTS = [1, 2, 3, 4, 5]
 SEEDS = [1, 2, 3]
@@ -22,6 +23,7 @@ VARIANTS = [
     ("clutter removed, odometry from the truth", {"drop_clutter": True, "true_odometry": True}, []),
     ("ceiling: poses pinned to the known-DA estimate", {}, ["--on-known-trajectory"]),
 ]
+MOTION_EVIDENCE_Q = 0.005  # m²/s, python/landmark_motion_evidence.py's default
 KEYS = ["da_accuracy_real", "ate_rmse", "clutter_rejected", "landmarks_split", "landmarks_merged",
         "landmarks_estimated"]
 
@@ -44,6 +46,50 @@ def table(results):
                      f"{mean_cell(means['landmarks_split'], 1)} / {mean_cell(means['landmarks_merged'], 1)} | "
                      f"{mean_cell(means['landmarks_estimated'], 1)} |")
     return lines
+
+
+def add_summaries(summaries):
+    """One summary from several of landmark_motion_evidence.summary's: per group, counts and threshold counts
+    summed, the largest Δ kept; groups in first-seen order."""
+    total = {}
+    for summary in summaries:
+        for group, count, above, largest in summary:
+            if group not in total:
+                total[group] = [0, [0] * len(above), None]
+            entry = total[group]
+            entry[0] += count
+            entry[1] = [a + b for a, b in zip(entry[1], above)]
+            if largest is not None:
+                entry[2] = largest if entry[2] is None else max(entry[2], largest)
+    return [(group, count, above, largest) for group, (count, above, largest) in total.items()]
+
+
+def motion_evidence_lines(semslam, runs):
+    """The random-walk evidence (python/landmark_motion_evidence.py) over `runs`, [(log, run folder)], summed by
+    group; needs the Python module the build made next to the tool (build/python)."""
+    module_folder = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(semslam))), "python")
+    if module_folder not in sys.path:
+        sys.path.insert(0, module_folder)
+    try:
+        import landmark_motion_evidence
+    except ImportError as error:
+        return [f"The random-walk evidence needs the Python module in {module_folder} ({error}): skipped.", ""]
+    summaries = []
+    for log, run in runs:
+        header, steps, poses, landmarks, detections = landmark_motion_evidence.read_run(log, run)
+        evidence = landmark_motion_evidence.random_walk_evidence(header, steps, poses, landmarks, detections,
+                                                                 MOTION_EVIDENCE_Q)
+        summaries.append(landmark_motion_evidence.summary(evidence, detections))
+    lines = ["**Is a landmark one static object?** (docs/association-front-end.md §9, \"The lead\"): per landmark of "
+             f"the {len(runs)} runs as recorded, Δ = ln p(random walk) − ln p(static point), the landmark's "
+             f"detections as a random walk of intensity q = {MOTION_EVIDENCE_Q} m²/s against one static point, the "
+             "whole graph of the run's final associations re-solved, compared by Laplace evidence "
+             "(`python/landmark_motion_evidence.py`). Landmarks grouped by the truth of their detections:", "",
+             "| landmarks | count | Δ > 0 | Δ > 5 | Δ > 10 | largest Δ |", "|---|---|---|---|---|---|"]
+    for group, count, above, largest in add_summaries(summaries):
+        lines.append(f"| {group} | {count} | " + " | ".join(str(a) for a in above) + f" | {cell(largest, 1)} |")
+    return lines + ["", "```sh", "PYTHONPATH=build/python /usr/bin/python3 python/landmark_motion_evidence.py "
+                    "rN-sS.jsonl DIR   # DIR: the run of the log as recorded", "```", ""]
 
 
 def association_oracles_section(semslam, data, scratch, shown):
@@ -87,4 +133,5 @@ def association_oracles_section(semslam, data, scratch, shown):
               "build/bin/semslam run --method mm-nh --in edited.jsonl --out DIR --no-covariances",
               "build/bin/semslam run --method mm-nh --in rN-sS.jsonl --out DIR --no-covariances --on-known-trajectory",
               "```", ""]
-    return lines
+    recorded_runs = [(log, out) for label, _, _, log, out, _ in jobs if label == VARIANTS[0][0]]
+    return lines + motion_evidence_lines(semslam, recorded_runs)

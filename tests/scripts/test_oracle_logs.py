@@ -1,7 +1,7 @@
 """python/oracle_logs.py on hand-made logs (no data needed): clutter dropped and nothing else, odometry replaced by
 the true relative motion (composing it onto the previous true pose gives the next) and kept next to a step without
 truth, the stated covariance kept, 3D refused; and the table of python/results_association_oracles.py on hand-made
-metrics.
+metrics, and its sum of the random-walk evidence summaries of several runs.
 
 Usage: test_oracle_logs.py
 """
@@ -118,6 +118,14 @@ class OracleLogs(unittest.TestCase):
         self.assertEqual(cells[1:6], ["0.120", "0.220", "0.320", "0.420", "0.520"])
         self.assertEqual(cells[6], "0.320")
         self.assertEqual(cells[7:], ["1.000", "0.500", "2.0 / 1.0", "30.0"])
+
+
+    def test_summaries_of_several_runs_add_up(self):
+        one = [("a", 3, [2, 1, 0], 4.5), ("b", 1, [0, 0, 0], None)]
+        two = [("a", 2, [1, 1, 1], 12.0), ("b", 4, [3, 2, 0], 7.0), ("c", 1, [1, 0, 0], 0.5)]
+        self.assertEqual(section.add_summaries([one, two]),
+                         [("a", 5, [3, 2, 1], 12.0), ("b", 5, [3, 2, 0], 7.0), ("c", 1, [1, 0, 0], 0.5)])
+        self.assertEqual(section.add_summaries([]), [])
 
 
 if __name__ == "__main__":
