@@ -74,8 +74,8 @@ def read_run(log_path, run_dir):
     return header, steps, np.array(poses), landmarks, detections
 
 
-def static_graph(header, steps, poses, detections, skip_landmark=None):
-    """The run's graph, without the detection factors of `skip_landmark`."""
+def motion_graph(header, steps, poses):
+    """The run's pose prior and odometry factors: the part of the graph every model shares."""
     graph = semslam.FactorGraph()
     prior = header.get("initial_pose")
     if prior:
@@ -89,11 +89,23 @@ def static_graph(header, steps, poses, detections, skip_landmark=None):
         graph.add(semslam.BetweenFactorSE2(semslam.pose_key(k - 1), semslam.pose_key(k),
                                            semslam.SE2(*odometry["increment"]),
                                            semslam.NoiseModel.from_covariance(np.array(odometry["covariance"]))))
-    for k, landmark, r, bearing, covariance, _ in detections:
-        if landmark != skip_landmark:
-            graph.add(semslam.RangeBearingFactor(semslam.pose_key(k), semslam.landmark_key(landmark),
-                                                 np.array([r, bearing]),
-                                                 semslam.NoiseModel.from_covariance(np.array(covariance))))
+    return graph
+
+
+def detection_factor(detection, landmark_key):
+    """The range-bearing factor of one detection (step, landmark, range, bearing, covariance, truth) on a key."""
+    k, _, r, bearing, covariance, _ = detection
+    return semslam.RangeBearingFactor(semslam.pose_key(k), landmark_key, np.array([r, bearing]),
+                                      semslam.NoiseModel.from_covariance(np.array(covariance)))
+
+
+def static_graph(motion, detections, skip_landmark=None):
+    """The run's graph (`motion` and every detection on its landmark), without the detections of `skip_landmark`."""
+    graph = semslam.FactorGraph()
+    graph.add_graph(motion)
+    for detection in detections:
+        if detection[1] != skip_landmark:
+            graph.add(detection_factor(detection, semslam.landmark_key(detection[1])))
     return graph
 
 
@@ -109,7 +121,8 @@ def initial_values(poses, landmarks, detections):
 
 def random_walk_evidence(header, steps, poses, landmarks, detections, q):
     """{landmark id: Δ} for every landmark with at least 3 detections (Δ as in the module comment)."""
-    base = static_graph(header, steps, poses, detections)
+    motion = motion_graph(header, steps, poses)
+    base = static_graph(motion, detections)
     mode = semslam.optimize(base, initial_values(poses, landmarks, detections)).values
     static_score = semslam.laplace_evidence_score(base, mode)
     result = {}
@@ -117,7 +130,7 @@ def random_walk_evidence(header, steps, poses, landmarks, detections, q):
         own = [d for d in detections if d[1] == landmark]
         if len(own) < 3:
             continue
-        graph = static_graph(header, steps, poses, detections, skip_landmark=landmark)
+        graph = static_graph(motion, detections, skip_landmark=landmark)
         initial = semslam.Values()
         for key in mode.keys():
             initial.insert(key, mode[key])
@@ -125,9 +138,8 @@ def random_walk_evidence(header, steps, poses, landmarks, detections, q):
         for i in range(1, len(own)):
             keys.append(semslam.landmark_key(EXTRA_KEY_OFFSET + i))
             initial.insert(keys[-1], np.asarray(mode[keys[0]]))
-        for key, (k, _, r, bearing, covariance, _) in zip(keys, own):
-            graph.add(semslam.RangeBearingFactor(semslam.pose_key(k), key, np.array([r, bearing]),
-                                                 semslam.NoiseModel.from_covariance(np.array(covariance))))
+        for key, detection in zip(keys, own):
+            graph.add(detection_factor(detection, key))
         for i in range(1, len(own)):
             dt = max(steps[own[i][0]]["time"] - steps[own[i - 1][0]]["time"], 1e-3)
             graph.add(semslam.BetweenFactorPoint2(keys[i - 1], keys[i], np.zeros(2),

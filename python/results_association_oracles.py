@@ -3,8 +3,9 @@ from. Each robot's log (whole recording, 1 s keyframes, 3 classes, 10 % misclass
 as recorded and with one or both of two sources of difficulty removed by an oracle edit (python/oracle_logs.py):
 the other robots' detections (clutter), and the odometry's error (each increment replaced by the true relative
 motion, its stated covariance kept). The ceiling row pins the poses to the known-DA estimate
-(`--on-known-trajectory`, as the association section does). Every figure comes from a run's metrics.json; cells
-are means over the three label seeds.
+(`--on-known-trajectory`, as the association section does). Every figure of the table comes from a run's
+metrics.json; cells are means over the three label seeds. Below it, the random-walk evidence of every landmark of the
+runs as recorded (python/landmark_motion_evidence.py, through the Python module the build made).
 """
 import concurrent.futures
 import os
