@@ -18,7 +18,12 @@ extra positions pay for themselves only where the detections wander):
 must be of a 2D log with a range-bearing sensor at the body origin (MRCLAM, Lost in the Woods); a diagnostic, slow
 on long logs (one whole-graph solve per landmark).
 
+With `--write-without-flagged OUT`, the log is also written without the detections the run left on a landmark
+whose Δ exceeds `--above` (default 5): what demoting those landmarks as they were made would give at best
+(python/oracle_logs.py writes it; docs/results.md, section `association-oracles`, runs mm-nh on it).
+
 Usage: PYTHONPATH=build/python python3 python/landmark_motion_evidence.py LOG RUN_DIR [--q 0.005]
+           [--write-without-flagged OUT [--above 5]]
 Needs the semslam Python module (built by `make build` into build/python).
 """
 import argparse
@@ -31,6 +36,7 @@ import sys
 
 import numpy as np
 
+import oracle_logs
 import semslam
 
 # A random walk's extra positions take keys above every landmark a run can have.
@@ -72,6 +78,14 @@ def read_run(log_path, run_dir):
             d = steps[k]["detections"][int(r["detection"])]
             detections.append((k, landmark, d["geometry"][0], d["geometry"][1], d["covariance"], r["truth"]))
     return header, steps, np.array(poses), landmarks, detections
+
+
+def detections_on(run_dir, flagged):
+    """{(step index, detection index)} of every detection the run's associations.csv puts on a landmark in
+    `flagged`."""
+    with open(os.path.join(run_dir, "associations.csv"), newline="") as f:
+        return {(int(r["step"]), int(r["detection"])) for r in csv.DictReader(f)
+                if r["landmark"].isdigit() and int(r["landmark"]) in flagged}
 
 
 def motion_graph(header, steps, poses):
@@ -186,6 +200,9 @@ def main():
     parser.add_argument("run", metavar="RUN_DIR")
     parser.add_argument("--q", type=float, default=0.005,
                         help="random-walk intensity, m²/s (default 0.005: about 0.07 m/s over a second)")
+    parser.add_argument("--write-without-flagged", metavar="OUT",
+                        help="also write the log without the detections on landmarks whose Δ exceeds --above")
+    parser.add_argument("--above", type=float, default=5.0, help="the threshold on Δ for --write-without-flagged")
     args = parser.parse_args()
     if not (args.q > 0 and math.isfinite(args.q)):
         sys.exit(f"landmark_motion_evidence.py: --q must be a positive number, got {args.q}")
@@ -203,6 +220,12 @@ def main():
     for group, count, above, largest in summary(evidence, detections):
         shown = "–" if largest is None else f"{largest:.1f}"
         print(f"| {group} | {count} | " + " | ".join(str(a) for a in above) + f" | {shown} |")
+    if args.write_without_flagged:
+        flagged = {landmark for landmark, delta in evidence.items() if delta > args.above}
+        counts = oracle_logs.edit(args.log, args.write_without_flagged,
+                                  drop_detections=detections_on(args.run, flagged))
+        print(f"\nwrote {args.write_without_flagged}: {counts['detections_dropped']} detections of {len(flagged)} "
+              f"landmarks with Δ > {args.above} dropped")
 
 
 if __name__ == "__main__":

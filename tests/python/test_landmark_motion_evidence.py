@@ -1,9 +1,11 @@
 """python/landmark_motion_evidence.py on a hand-made run: a static landmark's detections favour the static point, a
-landmark that drives away favours the random walk, the groups of the summary, and the refusals."""
+landmark that drives away favours the random walk, the groups of the summary, the log written without the flagged
+landmark's detections, and the refusals."""
 
 import json
 import math
 import os
+import subprocess
 import sys
 
 import numpy as np
@@ -96,6 +98,23 @@ def test_with_both_the_moving_one_has_the_larger_evidence(tmp_path):
     # gains too; the moving one's gains most, which is why a demotion would take the largest first and re-test.
     evidence, _ = evidence_of(str(tmp_path), landmarks=(0, 1))
     assert evidence[1] > evidence[0]
+
+
+def test_the_log_without_the_flagged_landmarks_detections(tmp_path):
+    log, run = write_run(str(tmp_path), landmarks=(0, 1))
+    assert lme.detections_on(run, {1}) == {(k, 1) for k in range(STEPS)}
+    out = str(tmp_path / "without.jsonl")
+    script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python",
+                          "landmark_motion_evidence.py")
+    result = subprocess.run([sys.executable, "-B", script, log, run, "--write-without-flagged", out, "--above", "300"],
+                            capture_output=True, text=True, env=dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path)))
+    assert result.returncode == 0, result.stderr
+    assert f"{STEPS} detections of 1 landmarks with Δ > 300.0 dropped" in result.stdout  # the moving one only
+    with open(out) as f:
+        header, *steps = [json.loads(line) for line in f]
+    assert [[d["truth"] for d in step["detections"]] for step in steps] == [[7]] * STEPS
+    with open(log) as f:
+        assert header == json.loads(next(f))
 
 
 def test_the_run_must_be_a_2d_range_bearing_one_whose_trajectory_matches_the_log(tmp_path):

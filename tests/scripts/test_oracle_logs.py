@@ -1,7 +1,9 @@
 """python/oracle_logs.py on hand-made logs (no data needed): clutter dropped and nothing else, odometry replaced by
 the true relative motion (composing it onto the previous true pose gives the next) and kept next to a step without
-truth, the stated covariance kept, 3D refused; and the table of python/results_association_oracles.py on hand-made
-metrics, and its sum of the random-walk evidence summaries of several runs.
+truth, the stated covariance kept, 3D refused; a constant odometry bias removed exactly and one that changes faster
+than the window only in part; detections dropped by their (step, index); and the table of python/results_association_oracles.py on hand-made
+metrics, its sum of the random-walk evidence summaries of several runs, and its accuracy with dropped real
+detections counted as wrong.
 
 Usage: test_oracle_logs.py
 """
@@ -104,6 +106,68 @@ class OracleLogs(unittest.TestCase):
         self.assertNotEqual(result.returncode, 0)
         self.assertIn("dimension 3", result.stderr)
 
+    def write_biased_log(self, bias_of_time, count=40, period=1.0):
+        """A log whose true motion turns and drives, with the odometry off by bias_of_time(t) per second (x, y, θ)."""
+        poses, log = [[0.0, 0.0, 0.0]], []
+        for k in range(count):
+            t = k * period
+            step = {"time": t, "true_pose": poses[-1], "detections": []}
+            if k > 0:
+                truth = oracle_logs.relative_pose_2d(poses[-2], poses[-1])
+                bias = bias_of_time(t)
+                step["odometry"] = {"increment": [truth[c] + bias[c] * period for c in range(3)],
+                                    "covariance": COVARIANCE}
+            log.append(step)
+            poses.append(compose(poses[-1], [0.3, 0.0, 0.2 * math.sin(0.3 * k)]))
+        with open(self.source, "w") as f:
+            f.write(json.dumps(HEADER) + "\n")
+            for step in log:
+                f.write(json.dumps(step) + "\n")
+        return log
+
+    def odometry_errors(self):
+        _, *edited = self.read()
+        errors = []
+        for previous, step in zip(edited, edited[1:]):
+            truth = oracle_logs.relative_pose_2d(previous["true_pose"], step["true_pose"])
+            u = step["odometry"]["increment"]
+            errors.append([u[0] - truth[0], u[1] - truth[1], math.remainder(u[2] - truth[2], 2 * math.pi)])
+        return errors
+
+    def test_a_constant_odometry_bias_is_removed_exactly(self):
+        self.write_biased_log(lambda t: [0.02, -0.01, 0.005])
+        counts = oracle_logs.edit(self.source, self.out, odometry_bias_window=10.0)
+        self.assertEqual(counts["odometry_debiased"], 39)
+        for error in self.odometry_errors():
+            for e in error:
+                self.assertAlmostEqual(e, 0.0, places=12)
+        _, *edited = self.read()
+        self.assertTrue(all(s["odometry"]["covariance"] == COVARIANCE for s in edited[1:]))
+
+    def test_a_bias_faster_than_the_window_is_removed_in_part(self):
+        # A heading bias alternating sign every step averages out over 10 s and is kept; a slow ramp is followed.
+        self.write_biased_log(lambda t: [0.0, 0.0, 0.01 * (-1) ** int(t) + 0.001 * t])
+        oracle_logs.edit(self.source, self.out, odometry_bias_window=10.0)
+        errors = [e[2] for e in self.odometry_errors()]
+        for k, e in enumerate(errors[5:-5], start=6):  # away from the ends, where the window is whole
+            self.assertAlmostEqual(abs(e), 0.01, delta=0.0012)  # the alternating part stays, the ramp is gone
+            self.assertEqual(e > 0, k % 2 == 0)
+
+    def test_the_bias_edit_is_refused_where_it_does_not_apply(self):
+        with self.assertRaisesRegex(ValueError, "positive number of seconds"):
+            oracle_logs.edit(self.source, self.out, odometry_bias_window=0.0)
+        with self.assertRaisesRegex(ValueError, "choose one"):
+            oracle_logs.edit(self.source, self.out, true_odometry=True, odometry_bias_window=5.0)
+        self.assertFalse(os.path.exists(self.out))
+
+    def test_detections_are_dropped_by_step_and_index(self):
+        counts = oracle_logs.edit(self.source, self.out, drop_detections={(0, 1), (1, 0), (2, 1), (3, 0)})
+        self.assertEqual(counts["detections_dropped"], 3)  # step 3 has no detection 0
+        _, *edited = self.read()
+        self.assertEqual([[d["truth"] for d in s["detections"]] for s in edited],
+                         [[4], [4], ["not-a-landmark"], [], []])
+        self.assertEqual(edited[1]["detections"][0]["geometry"], [2.5, 0.1])
+
     def test_the_section_table_means_over_seeds_and_robots(self):
         results = {}
         for robot in section.ROBOTS:
@@ -119,13 +183,23 @@ class OracleLogs(unittest.TestCase):
         self.assertEqual(cells[6], "0.320")
         self.assertEqual(cells[7:], ["1.000", "0.500", "2.0 / 1.0", "30.0"])
 
-
     def test_summaries_of_several_runs_add_up(self):
         one = [("a", 3, [2, 1, 0], 4.5), ("b", 1, [0, 0, 0], None)]
         two = [("a", 2, [1, 1, 1], 12.0), ("b", 4, [3, 2, 0], 7.0), ("c", 1, [1, 0, 0], 0.5)]
         self.assertEqual(section.add_summaries([one, two]),
                          [("a", 5, [3, 2, 1], 12.0), ("b", 5, [3, 2, 0], 7.0), ("c", 1, [1, 0, 0], 0.5)])
         self.assertEqual(section.add_summaries([]), [])
+
+    def test_dropped_real_detections_count_as_wrong(self):
+        # 60 real detections left, 45 of them right; 20 real ones dropped: 45 of 80.
+        metrics = {"da_total": 100, "da_clutter": 40, "da_accuracy_real": 0.75}
+        self.assertAlmostEqual(section.accuracy_with_dropped_as_wrong(metrics, 20), 45 / 80, places=15)
+        self.assertAlmostEqual(section.accuracy_with_dropped_as_wrong(metrics, 0), 0.75, places=15)
+        self.assertIsNone(section.accuracy_with_dropped_as_wrong({"da_total": 5, "da_clutter": 5,
+                                                                  "da_accuracy_real": None}, 0))
+        # Which dropped pairs are real: truth 4 at (0, 0) and (1, 1); clutter and "unknown" are not.
+        dropped = {(0, 0), (0, 1), (1, 0), (1, 1), (2, 0), (3, 0)}
+        self.assertEqual(section.real_detections_among(self.source, dropped), 2)
 
 
 if __name__ == "__main__":
