@@ -25,7 +25,7 @@ SIMULATION_SEEDS = range(1, 9)
 TRAJECTORIES = ["00", "07"]
 
 
-def _logs(semslam, data, scratch):
+def branch_logs(semslam, data, scratch):
     """{family: (kind, [(name, log path)])} of every log present, converted or simulated into `scratch`; the kind
     (mrclam, tracking, woods, simulation) says how sweep_tables makes the family's cells."""
     jobs = []  # (family, kind, name, log, command)
@@ -78,18 +78,18 @@ def branch_splits(folder):
     return len(rows), sum(1 for row in rows if row.endswith(",apart"))
 
 
-def run_sweep(semslam, families, scratch, windows=WINDOWS):
-    """Runs `mm-nh` with every window on every log (and `known` on the simulations); returns {(family, name, window
-    or "known"): run folder}."""
-    jobs = []  # (family, name, window or "known", folder, command)
+def run_variants(semslam, families, scratch, variants):
+    """Runs `mm-nh` in each variant, [(key, folder suffix, extra run arguments)], on every log (and `known` on the
+    simulations); returns {(family, name, key or "known"): run folder}."""
+    jobs = []  # (family, name, key or "known", folder, command)
     for family, (kind, logs) in families.items():
         for name, log in logs:
             stem = os.path.splitext(os.path.basename(log))[0]
-            for window in windows:
-                folder = os.path.join(scratch, f"{stem}_w{window}")
-                jobs.append((family, name, window, folder,
+            for key, suffix, arguments in variants:
+                folder = os.path.join(scratch, f"{stem}_{suffix}")
+                jobs.append((family, name, key, folder,
                              [semslam, "run", "--overwrite", "--quiet", "--method", "mm-nh", "--in", log, "--out",
-                              folder, "--no-covariances", "--loop-closure-branches", str(window)]))
+                              folder, "--no-covariances"] + arguments))
             if kind == "simulation":
                 folder = os.path.join(scratch, f"{stem}_known")
                 jobs.append((family, name, "known", folder,
@@ -97,7 +97,14 @@ def run_sweep(semslam, families, scratch, windows=WINDOWS):
                               folder, "--no-covariances"]))
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, os.cpu_count() or 2)) as pool:
         list(pool.map(lambda job: run_checked(job[4]), jobs))
-    return {(family, name, window): folder for family, name, window, folder, _ in jobs}
+    return {(family, name, key): folder for family, name, key, folder, _ in jobs}
+
+
+def run_sweep(semslam, families, scratch, windows=WINDOWS):
+    """Runs `mm-nh` with every window on every log (and `known` on the simulations); returns {(family, name, window
+    or "known"): run folder}."""
+    return run_variants(semslam, families, scratch,
+                        [(window, f"w{window}", ["--loop-closure-branches", str(window)]) for window in windows])
 
 
 def sweep_tables(families, folders, windows=WINDOWS):
@@ -158,7 +165,7 @@ def sweep_summary(families, folders, windows=WINDOWS):
 
 def loop_closure_branches_section(semslam, data, scratch, shown, python):
     lines = ["## Two branches at an ambiguous loop closure: the window swept (issue 10)", ""]
-    families = _logs(semslam, data, scratch)
+    families = branch_logs(semslam, data, scratch)
     if not families:
         return lines + ["None of MRCLAM, KITTI tracking, Lost in the Woods or the KITTI odometry poses is present: "
                         "section skipped.", ""]

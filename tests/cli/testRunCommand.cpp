@@ -3,8 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <nlohmann/json.hpp>
 
@@ -137,6 +139,32 @@ TEST(RunCommand, TheConfirmationSpacingReachesTheProvisionalLandmarkRule) {
   fs::remove_all(dir);
 }
 
+/// One row of branches.csv.
+struct BranchRow {
+  int openedAt = 0, closedAfter = 0;
+  double asIs = 0.0, apart = 0.0;
+  std::optional<double> nextBest;
+  std::string kept;
+};
+
+BranchRow parseBranchRow(const std::string& row) {
+  std::stringstream fields(row);
+  std::string openedAt, closedAfter, asIs, apart, nextBest;
+  BranchRow split;
+  std::getline(fields, openedAt, ',');
+  std::getline(fields, closedAfter, ',');
+  std::getline(fields, asIs, ',');
+  std::getline(fields, apart, ',');
+  std::getline(fields, nextBest, ',');
+  std::getline(fields, split.kept);
+  split.openedAt = std::stoi(openedAt);
+  split.closedAfter = std::stoi(closedAfter);
+  split.asIs = std::stod(asIs);
+  split.apart = std::stod(apart);
+  if (!nextBest.empty()) split.nextBest = std::stod(nextBest);
+  return split;
+}
+
 TEST(RunCommand, LoopClosureBranchesAreListedInBranchesCsv) {
   // This log's first re-sightings anchor (the pose after one step of odometry is known less well than the
   // sensor resolves): a split opens, and branches.csv lists it with the branch its score chose.
@@ -151,20 +179,15 @@ TEST(RunCommand, LoopClosureBranchesAreListedInBranchesCsv) {
   ASSERT_TRUE(branches) << "no branches.csv";
   std::string row;
   std::getline(branches, row);
-  EXPECT_EQ(row, "opened_at,closed_after,score_as_is,score_apart,kept");
+  EXPECT_EQ(row, "opened_at,closed_after,score_as_is,score_apart,score_next_best,kept");
   int rows = 0;
   while (std::getline(branches, row)) {
     ++rows;
-    std::stringstream fields(row);
-    std::string openedAt, closedAfter, asIs, apart, kept;
-    std::getline(fields, openedAt, ',');
-    std::getline(fields, closedAfter, ',');
-    std::getline(fields, asIs, ',');
-    std::getline(fields, apart, ',');
-    std::getline(fields, kept);
-    EXPECT_LE(std::stoi(openedAt), std::stoi(closedAfter)) << row;
-    EXPECT_LE(std::stoi(closedAfter), std::stoi(openedAt) + 8) << row;
-    EXPECT_EQ(kept, std::stod(apart) < std::stod(asIs) ? "apart" : "as-is") << row;
+    const BranchRow split = parseBranchRow(row);
+    EXPECT_LE(split.openedAt, split.closedAfter) << row;
+    EXPECT_LE(split.closedAfter, split.openedAt + 8) << row;
+    EXPECT_FALSE(split.nextBest) << row;  // the third branch is opt-in
+    EXPECT_EQ(split.kept, split.apart < split.asIs ? "apart" : "as-is") << row;
   }
   EXPECT_GE(rows, 1);
   // The default window (16) splits too; with 0, nothing branches and no branches.csv is written.
@@ -178,10 +201,27 @@ TEST(RunCommand, LoopClosureBranchesAreListedInBranchesCsv) {
                 .exitCode,
             0);
   EXPECT_FALSE(fs::exists(single / "branches.csv"));
+  // With the third branch, each row's kept branch is the one of the lowest score among those opened.
+  const fs::path nextBest = dir / "next-best";
+  ASSERT_EQ(runSemslam("run --method mm-nh --loop-closure-branches 8 --loop-closure-next-best --in \"" + log.string() +
+                       "\" --out \"" + nextBest.string() + "\"")
+                .exitCode,
+            0);
+  std::ifstream threeWay(nextBest / "branches.csv");
+  ASSERT_TRUE(threeWay) << "no branches.csv";
+  std::getline(threeWay, row);
+  while (std::getline(threeWay, row)) {
+    const BranchRow split = parseBranchRow(row);
+    std::string lowest = split.apart < split.asIs ? "apart" : "as-is";
+    if (split.nextBest && *split.nextBest < std::min(split.asIs, split.apart)) lowest = "next-best";
+    EXPECT_EQ(split.kept, lowest) << row;
+  }
   // Branches need the joint assignment, factors that are the likelihood, and a window of at least 0 steps.
   for (const std::string flags :
        {"--method known --loop-closure-branches 8", "--method gpda --loop-closure-branches 8",
         "--method mm-nh --birth threshold --loop-closure-branches 8", "--method mm-nh --loop-closure-branches -1",
+        // The next-best branch is a third branch of a split.
+        "--method mm-nh --loop-closure-branches 0 --loop-closure-next-best", "--method gpda --loop-closure-next-best",
         // Switch rounds (RunMethod.h): a mixture to switch and the incremental back end.
         "--method ml --switch-rounds 5", "--method mm --smoother batch --switch-rounds 5",
         "--method mm-nh --switch-rounds -1",

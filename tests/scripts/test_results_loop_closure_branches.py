@@ -55,7 +55,7 @@ class LoopClosureBranchesSection(unittest.TestCase):
         folder = self.folders[("Simulation", "seed 4", 8)]
         with open(os.path.join(folder, "branches.csv")) as f:
             rows = f.read().splitlines()
-        self.assertEqual(rows[0], "opened_at,closed_after,score_as_is,score_apart,kept")
+        self.assertEqual(rows[0], "opened_at,closed_after,score_as_is,score_apart,score_next_best,kept")
         splits, apart = section.branch_splits(folder)
         self.assertEqual(splits, len(rows) - 1)
         self.assertGreaterEqual(splits, 1)

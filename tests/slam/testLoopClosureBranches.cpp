@@ -9,10 +9,17 @@
 // their look-alikes where it expects A and D: A and D start new landmarks, and the error stays. With a second
 // branch open for a few steps, the branch that kept B and E apart sees A, D and F re-sighted where they are
 // mapped, and its evidence wins.
+//
+// The third branch's scenario (--loop-closure-next-best): all five objects are mapped from the standstill, and
+// the odometry back slips 0.8 m along y (within its declared σ), so that A and D, seen alone on the return, appear
+// where B and E are mapped: the front end pairs them with B's and E's landmarks. Keeping them apart makes two
+// duplicates; pairing them with their next-best landmarks, A's and D's own, is right, and its evidence wins once
+// F is re-sighted.
 
 #include <gtest/gtest.h>
 
 #include <map>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <set>
@@ -31,6 +38,8 @@ struct LookAlikes {
   std::vector<Point2> objects{Point2(6.0, 0.0), Point2(4.0, -5.0), Point2(-3.0, 6.0),  // A, D, F
                               Point2(6.0, 0.8), Point2(4.0, -4.2)};                    // B = A + s, E = D + s
   double travelSigma;  // of each 2 m step of the drive away and back
+  bool lookAlikesMapped = false;  // B and E seen from the standstill too (the third branch's scenario)
+  double slip = 0.0;              // the odometry's error along y over the drive back (exact when 0)
   static constexpr int kMapping = 4, kAway = 10, kBack = 10;  // steps: mapping at a standstill, away, back
   static constexpr int kReturn = kMapping + kAway + kBack;    // the first step back: B and E alone
 
@@ -49,9 +58,9 @@ struct LookAlikes {
   }
 
   std::vector<int> seen(int k) const {
-    if (k < kMapping) return {kA, kD, kF};
+    if (k < kMapping) return lookAlikesMapped ? std::vector<int>{kA, kD, kF, kB, kE} : std::vector<int>{kA, kD, kF};
     if (k < kReturn) return {};
-    if (k == kReturn) return {kB, kE};
+    if (k == kReturn) return lookAlikesMapped ? std::vector<int>{kA, kD} : std::vector<int>{kB, kE};
     return {kA, kD, kF, kB, kE};
   }
 
@@ -61,7 +70,8 @@ struct LookAlikes {
     s.truePose = SE2(x(k), 0.0, 0.0);
     if (k > 0) {
       const double sigma = x(k) != x(k - 1) ? travelSigma : 0.01, headingSigma = 0.02 * sigma;
-      s.odometry = Odometry{SE2(x(k) - x(k - 1), 0.0, 0.0),
+      const bool back = k > kMapping + kAway && k <= kReturn;
+      s.odometry = Odometry{SE2(x(k) - x(k - 1), back ? slip / kBack : 0.0, 0.0),
                             Vector3(sigma * sigma, sigma * sigma, headingSigma * headingSigma).asDiagonal().toDenseMatrix()};
     }
     for (int id : seen(k)) {
@@ -90,6 +100,18 @@ std::map<int, int> landmarkOfTruth(const SemanticSlam& slam) {
     landmark[truth] = landmarks.size() == 1 && *landmarks.begin() ? **landmarks.begin() : -1;
   }
   return landmark;
+}
+
+/// Each of the scenario's five objects has all its detections on one landmark, and no two share one.
+void expectEveryObjectOnALandmarkOfItsOwn(const SemanticSlam& slam) {
+  const std::map<int, int> landmarks = landmarkOfTruth(slam);
+  ASSERT_EQ(landmarks.size(), 5u);
+  std::set<int> distinct;
+  for (const auto& [truth, landmark] : landmarks) {
+    EXPECT_GE(landmark, 0) << "object " << truth;
+    distinct.insert(landmark);
+  }
+  EXPECT_EQ(distinct.size(), 5u);
 }
 
 LoopClosureBranches runScenario(int window, int steps, double travelSigma = 0.5) {
@@ -126,17 +148,89 @@ TEST(LoopClosureBranches, ABranchOpenUntilTheTrueObjectIsReSeenKeepsTheLookAlike
   const LoopClosureBranches::Split& split = run.splits().front();
   EXPECT_EQ(split.openedAt, LookAlikes::kReturn);
   EXPECT_EQ(split.closedAfter, LookAlikes::kReturn + 3);
-  EXPECT_TRUE(split.keptB);
+  EXPECT_EQ(split.kept, LoopClosureBranches::Branch::Apart);
   EXPECT_LT(split.scoreB, split.scoreA);
+  EXPECT_FALSE(split.scoreC);  // not asked for
   // Every object's detections on one landmark of their own.
-  const std::map<int, int> landmarks = landmarkOfTruth(run.slam());
-  ASSERT_EQ(landmarks.size(), 5u);
-  std::set<int> distinct;
-  for (const auto& [truth, landmark] : landmarks) {
-    EXPECT_GE(landmark, 0) << "object " << truth;
-    distinct.insert(landmark);
+  expectEveryObjectOnALandmarkOfItsOwn(run.slam());
+}
+
+/// The third branch's scenario: ml (one landmark per detection, so a pairing stays as the step made it; under mm-nh
+/// the return's mixtures switch to A's and D's landmarks once F pins the pose).
+SemanticSlamOptions slipOptions(int window, bool nextBest) {
+  SemanticSlamOptions options = optionsWithWindow(window);
+  options.strategy = AssociationStrategy::MaximumLikelihood;
+  options.loopClosureNextBest = nextBest;
+  return options;
+}
+
+/// The third branch's scenario run with branches of window `window`, the third branch on or off.
+LoopClosureBranches runSlipScenario(int window, bool nextBest) {
+  LookAlikes scenario;
+  scenario.lookAlikesMapped = true;
+  scenario.slip = 0.8;
+  const SemanticSlamOptions options = slipOptions(window, nextBest);
+  LoopClosureBranches run(scenario.header, options);
+  for (int k = 0; k < kSteps; ++k) run.addStep(scenario.step(k));
+  run.finish();
+  return run;
+}
+
+TEST(LoopClosureBranches, WithoutTheThirdBranchTheSlipPairsEachObjectWithItsLookAlike) {
+  for (const bool branches : {false, true}) {
+    const LoopClosureBranches run = runSlipScenario(branches ? 3 : 0, false);
+    const SemanticSlam& slam = run.slam();
+    const std::optional<int> landmarkOfB = slam.chosenAssociation(recordOf(slam, 0, kB)).first;
+    const std::optional<int> landmarkOfA = slam.chosenAssociation(recordOf(slam, 0, kA)).first;
+    ASSERT_TRUE(landmarkOfA && landmarkOfB);
+    const std::optional<int> returned = slam.chosenAssociation(recordOf(slam, LookAlikes::kReturn, kA)).first;
+    EXPECT_NE(returned, landmarkOfA) << (branches ? "with" : "without") << " branches";
+    if (!branches) EXPECT_EQ(returned, landmarkOfB);  // the look-alike's landmark, where the slip puts A
   }
-  EXPECT_EQ(distinct.size(), 5u);
+}
+
+TEST(LoopClosureBranches, TheThirdBranchPairsTheReturnWithTheNextBestLandmarksAndWins) {
+  const LoopClosureBranches run = runSlipScenario(3, true);
+  ASSERT_EQ(run.splits().size(), 1u);
+  const LoopClosureBranches::Split& split = run.splits().front();
+  EXPECT_EQ(split.openedAt, LookAlikes::kReturn);
+  ASSERT_TRUE(split.scoreC);
+  EXPECT_EQ(split.kept, LoopClosureBranches::Branch::NextBest);
+  EXPECT_LT(*split.scoreC, split.scoreA);
+  EXPECT_LT(*split.scoreC, split.scoreB);
+  // Every object's detections, the return's included, on one landmark of their own.
+  expectEveryObjectOnALandmarkOfItsOwn(run.slam());
+}
+
+TEST(LoopClosureBranches, PairElsewhereTakesTheNextBestLandmarkOrReportsThatThereIsNone) {
+  LookAlikes scenario;
+  scenario.lookAlikesMapped = true;
+  scenario.slip = 0.8;
+  SemanticSlam slam(scenario.header, slipOptions(0, false));
+  for (int k = 0; k < LookAlikes::kReturn; ++k) slam.addStep(scenario.step(k));
+  slam.beginStep(scenario.step(LookAlikes::kReturn));
+  const std::vector<std::size_t> anchoring = slam.anchoringDetections();
+  ASSERT_EQ(anchoring.size(), 2u);  // A and D, paired with B's and E's landmarks
+  const std::size_t first = anchoring.front();
+  EXPECT_THROW(slam.pairElsewhere({first - 1}), std::invalid_argument);  // a record of an earlier step
+  std::unique_ptr<SemanticSlam> elsewhere = slam.fork();
+  ASSERT_TRUE(elsewhere->pairElsewhere(anchoring));
+  elsewhere->completeStep();
+  const std::optional<int> landmarkOfA = elsewhere->chosenAssociation(recordOf(*elsewhere, 0, kA)).first;
+  const std::optional<int> landmarkOfD = elsewhere->chosenAssociation(recordOf(*elsewhere, 0, kD)).first;
+  EXPECT_EQ(elsewhere->chosenAssociation(recordOf(*elsewhere, LookAlikes::kReturn, kA)).first, landmarkOfA);
+  EXPECT_EQ(elsewhere->chosenAssociation(recordOf(*elsewhere, LookAlikes::kReturn, kD)).first, landmarkOfD);
+  // Each call takes one more landmark from each record; once the unassigned hypothesis is next for both, it says
+  // so, and the records start landmarks of their own.
+  std::unique_ptr<SemanticSlam> again = slam.fork();
+  int calls = 1;
+  while (again->pairElsewhere(anchoring)) ASSERT_LE(++calls, 5);  // five landmarks: it must end
+  EXPECT_GE(calls, 2);
+  again->completeStep();
+  EXPECT_TRUE(recordOf(*again, LookAlikes::kReturn, kA).createdLandmark);
+  EXPECT_TRUE(recordOf(*again, LookAlikes::kReturn, kD).createdLandmark);
+  slam.completeStep();  // the run itself is unchanged by its forks
+  EXPECT_NE(slam.chosenAssociation(recordOf(slam, LookAlikes::kReturn, kA)).first, landmarkOfA);
 }
 
 TEST(LoopClosureBranches, ARunWithoutAnAnchoringPairingIsTheSingleRunBitForBit) {
@@ -167,6 +261,16 @@ TEST(LoopClosureBranches, AWindowNeedsTheJointAssignmentAndFactorsThatAreTheLike
   EXPECT_THROW(LoopClosureBranches(LookAlikes().header, options), std::invalid_argument);
   options = optionsWithWindow(-1);
   EXPECT_THROW(LoopClosureBranches(LookAlikes().header, options), std::invalid_argument);
+  // The next-best branch is a third branch of a split: it needs splits.
+  options = optionsWithWindow(0);
+  options.loopClosureNextBest = true;
+  EXPECT_THROW(LoopClosureBranches(LookAlikes().header, options), std::invalid_argument);
+  options = SemanticSlamOptions{};
+  options.strategy = AssociationStrategy::Gpda;
+  options.loopClosureNextBest = true;
+  EXPECT_THROW(LoopClosureBranches(LookAlikes().header, options), std::invalid_argument);
+  options.strategy = AssociationStrategy::MaxMixtureNullHypothesis;
+  EXPECT_EQ(LoopClosureBranches::window(options), LoopClosureBranches::kDefaultWindow);
 }
 
 TEST(LoopClosureBranches, TheDefaultWindowIsOnWhereBranchesApplyAndOffElsewhere) {

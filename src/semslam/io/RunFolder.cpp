@@ -84,10 +84,11 @@ void writeRunFolder(const std::string& directory, const RunOutput& run) {
   }
   if (!run.branchSplits.empty()) {
     writeFileAtomically((folder / "branches.csv").string(), [&](std::ostream& out) {
-      out << "opened_at,closed_after,score_as_is,score_apart,kept\n";
+      out << "opened_at,closed_after,score_as_is,score_apart,score_next_best,kept\n";
       for (const BranchSplitRecord& split : run.branchSplits) {
         out << split.openedAt << "," << split.closedAfter << "," << seventeenDigitNumber(split.scoreAsIs) << ","
-            << seventeenDigitNumber(split.scoreApart) << "," << (split.keptApart ? "apart" : "as-is") << "\n";
+            << seventeenDigitNumber(split.scoreApart) << ","
+            << (split.scoreNextBest ? seventeenDigitNumber(*split.scoreNextBest) : "") << "," << split.kept << "\n";
       }
     });
   }

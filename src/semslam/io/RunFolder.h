@@ -12,10 +12,11 @@
 //                          truth `not-a-landmark` for clutter, `unknown` where the dataset cannot decide, empty
 //                          where the log has no truth; chi2 = rᵀR⁻¹r of the detection against its landmark at the
 //                          final estimate, empty without a landmark)
-//   branches.csv           `opened_at,closed_after,score_as_is,score_apart,kept`: paper B's ml,
+//   branches.csv           `opened_at,closed_after,score_as_is,score_apart,score_next_best,kept`: paper B's ml,
 //                          mm and mm-nh (loop-closure branches, on by default), one row per split (slam/LoopClosureBranches.h): the step that
-//                          opened it, the step after which it closed, the two branches' scores (−2 ln evidence,
-//                          slam/BranchScore.h) and which was kept, `as-is` or `apart`
+//                          opened it, the step after which it closed, the branches' scores (−2 ln evidence,
+//                          slam/BranchScore.h; score_next_best empty unless --loop-closure-next-best opened that
+//                          branch) and which was kept, `as-is`, `apart` or `next-best`
 // metrics.json is written by io/RunMetricsFile.h. Every file is written atomically (io/AtomicFile.h); a file whose
 // data is empty (no truth, no associations) is not written.
 
@@ -44,7 +45,8 @@ struct BranchSplitRecord {
   int closedAfter = 0;
   double scoreAsIs = 0.0;   // branch A: the step as the front end decided it
   double scoreApart = 0.0;  // branch B: the anchoring detections kept apart
-  bool keptApart = false;
+  std::optional<double> scoreNextBest;  // branch C, where it was opened: the next-best landmarks
+  std::string kept;                     // "as-is", "apart" or "next-best"
 };
 
 struct RunOutput {

@@ -49,7 +49,8 @@ void runSemanticSlam(const MeasurementLog& log, const MethodOptions& options, co
   }
   run.output = runOutputFrom(log, run.result, std::move(associations));
   for (const LoopClosureBranches::Split& split : branches.splits()) {
-    run.output.branchSplits.push_back({split.openedAt, split.closedAfter, split.scoreA, split.scoreB, split.keptB});
+    run.output.branchSplits.push_back({split.openedAt, split.closedAfter, split.scoreA, split.scoreB, split.scoreC,
+                                       LoopClosureBranches::branchName(split.kept)});
   }
 }
 

@@ -10,11 +10,15 @@
 //   branch B  a fork of the run taken between the halves of step k (SemanticSlam::beginStep / completeStep), in
 //             which the anchoring detections start provisional landmarks, never merged with the landmarks they
 //             were paired with (SemanticSlam::keepApart).
-// Both take steps k+1 … k+W (W = SemanticSlamOptions::loopClosureBranchWindow); then the branch with the lower
-// BranchScore (−2 ln of its evidence, BranchScore.h) is kept and the other dropped; a split still open at the end
+//   branch C  (SemanticSlamOptions::loopClosureNextBest, opt-in) a fork in which the anchoring detections may not
+//             take the landmarks they were paired with, so they take their next-best ones
+//             (SemanticSlam::pairElsewhere): the other look-alike; opened only where some detection then has one.
+// All take steps k+1 … k+W (W = SemanticSlamOptions::loopClosureBranchWindow); then the branch with the lowest
+// BranchScore (−2 ln of its evidence, BranchScore.h) is kept and the others dropped; a split still open at the end
 // of the log is closed by finish(). At most one split is open at a time: an anchoring step during an open split is
 // decided by each branch's front end, as without branches. So a run costs at most twice a single run over the
-// steps a split is open, and a run with no anchoring step (or W = 0) is step for step the single run.
+// steps a split is open (three times with branch C), and a run with no anchoring step (or W = 0) is step for step
+// the single run.
 //
 // Where branches apply: a joint assignment whose pairings can anchor (BirthRule::Unassigned; not `known`) and
 // factors that are the data's likelihood under one association, which BranchScore integrates: ml's single
@@ -23,9 +27,11 @@
 // explicit window is refused.
 //
 // Invariants: main_ is branch A while a split is open and the kept branch otherwise; alternative_ is branch B
-// exactly while a split is open; both have processed the same steps whenever no step is begun.
+// exactly while a split is open, nextBest_ branch C while a split that opened it is open; all have processed the
+// same steps whenever no step is begun.
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "semslam/slam/SemanticSlam.h"
@@ -34,14 +40,20 @@ namespace semslam {
 
 class LoopClosureBranches {
  public:
-  /// One split: the step that opened it, the step after which it closed, both branches' scores then, and which was
+  /// The branches of a split (the class comment's A, B and C).
+  enum class Branch { AsIs, Apart, NextBest };
+  /// "as-is", "apart" or "next-best" (branches.csv, io/RunFolder.h).
+  static const char* branchName(Branch branch);
+
+  /// One split: the step that opened it, the step after which it closed, the branches' scores then, and which was
   /// kept.
   struct Split {
     int openedAt = 0;
     int closedAfter = 0;
     double scoreA = 0.0;
     double scoreB = 0.0;
-    bool keptB = false;
+    std::optional<double> scoreC;  ///< branch C's, where it was opened
+    Branch kept = Branch::AsIs;
   };
 
   /// The window where branches apply and SemanticSlamOptions::loopClosureBranchWindow is unset: the middle of the
@@ -50,7 +62,8 @@ class LoopClosureBranches {
   static constexpr int kDefaultWindow = 16;
 
   /// The window `options` ask for: loopClosureBranchWindow if set, else kDefaultWindow where branches apply and 0
-  /// elsewhere. Throws std::invalid_argument for a negative window, or a positive one where branches do not apply.
+  /// elsewhere. Throws std::invalid_argument for a negative window, a positive one where branches do not apply, or
+  /// loopClosureNextBest without branches.
   static int window(const SemanticSlamOptions& options);
 
   /// Throws as window() does.
@@ -72,6 +85,7 @@ class LoopClosureBranches {
   int window_;
   std::unique_ptr<SemanticSlam> main_;
   std::unique_ptr<SemanticSlam> alternative_;
+  std::unique_ptr<SemanticSlam> nextBest_;
   std::vector<Split> splits_;
 };
 

@@ -521,6 +521,27 @@ void SemanticSlam::keepApart(const std::vector<std::size_t>& records) {
   }
 }
 
+bool SemanticSlam::pairElsewhere(const std::vector<std::size_t>& records) {
+  if (!pending_) throw std::logic_error("pairElsewhere: no step begun");
+  for (std::size_t r : records) {
+    if (r < pending_->first || r - pending_->first >= pending_->assignedLandmark.size()) {
+      throw std::invalid_argument("pairElsewhere: record " + std::to_string(r) + " is not of the begun step");
+    }
+    const int given = pending_->assignedLandmark[r - pending_->first];
+    if (given < 0) continue;
+    DetectionRecord& record = records_[r];
+    const auto at = std::find(record.candidates.begin(), record.candidates.end(), given);
+    if (at == record.candidates.end()) throw std::logic_error("pairElsewhere: the assigned landmark is no candidate");
+    const auto c = at - record.candidates.begin();
+    record.candidates.erase(at);
+    record.logLikelihoods.erase(record.logLikelihoods.begin() + c);
+    if (!record.weights.empty()) record.weights.erase(record.weights.begin() + c);
+  }
+  pending_->assignedLandmark = jointAssignment(pending_->first);
+  return std::any_of(records.begin(), records.end(),
+                     [this](std::size_t r) { return pending_->assignedLandmark[r - pending_->first] >= 0; });
+}
+
 void SemanticSlam::applyJointAssignment(std::size_t first, const std::vector<int>& assignedLandmark) {
   const std::size_t rows = records_.size() - first;
   // Exclusion: a detection's remaining candidates are those no other detection of the step was assigned.

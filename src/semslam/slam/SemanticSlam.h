@@ -57,8 +57,8 @@
 //
 // A step is processed in two halves, beginStep (steps 1-2, the joint assignment found but not applied) and
 // completeStep (the rest), so that a run can be forked between them with a different decision on the step's
-// anchoring pairings (keepApart): LoopClosureBranches.h keeps two such branches and the one the data favour
-// (docs/association-front-end.md §10). addStep is the two halves in one.
+// anchoring pairings (keepApart, pairElsewhere): LoopClosureBranches.h keeps two or three such branches and the
+// one the data favour (docs/association-front-end.md §10). addStep is the two halves in one.
 //
 // Invariants: landmark indices are dense, 0-based, in creation order, and are the landmark ids of every output
 // (a dropped or merged landmark keeps its index and its variable, held by its weak prior, but leaves the map and
@@ -127,6 +127,9 @@ struct SemanticSlamOptions {
   /// is kept; 0: no branches. Unset: LoopClosureBranches::kDefaultWindow where branches apply (BirthRule::Unassigned
   /// with ml, mm or mm-nh), none elsewhere.
   std::optional<int> loopClosureBranchWindow;
+  /// §10: a third branch at each split, in which the anchoring detections take their next-best landmarks
+  /// (SemanticSlam::pairElsewhere); opt-in
+  bool loopClosureNextBest = false;
 };
 
 /// What became of one detection.
@@ -179,6 +182,12 @@ class SemanticSlam {
   /// active before the step (not only the one it was given: under the uncertainty that made the pairing anchor, the
   /// merge test would otherwise pair it with the next look-alike in reach).
   void keepApart(const std::vector<std::size_t>& records);
+  /// (§10, the third branch) The begun step's `records` may not take the landmarks the joint assignment gave them:
+  /// each loses that landmark from its candidates, and the step's joint assignment is found again, so a record
+  /// takes its next-best landmark (or starts one, where the unassigned hypothesis is next). Returns whether some
+  /// record of `records` now has a landmark: otherwise this branch is keepApart's without its distinctness, and
+  /// not worth keeping.
+  bool pairElsewhere(const std::vector<std::size_t>& records);
 
   const Smoother& smoother() const { return *smoother_; }
   int steps() const { return static_cast<int>(poseKeys_.size()); }
