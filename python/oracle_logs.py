@@ -90,7 +90,8 @@ def edit(source, destination, drop_clutter=False, true_odometry=False, odometry_
     with open(source) as f:
         header = json.loads(next(f))
         steps = [json.loads(line) for line in f]
-    odometry_edit = "--true-odometry" if true_odometry else "--odometry-bias-from-truth" if odometry_bias_window else None
+    odometry_edit = ("--true-odometry" if true_odometry else
+                     "--odometry-bias-from-truth" if odometry_bias_window else None)
     if odometry_edit and header.get("dimension") != 2:
         raise ValueError(f"{source}: {odometry_edit} is written for 2D logs, this one has dimension "
                          f"{header.get('dimension')}")

@@ -1,9 +1,9 @@
 """python/oracle_logs.py on hand-made logs (no data needed): clutter dropped and nothing else, odometry replaced by
 the true relative motion (composing it onto the previous true pose gives the next) and kept next to a step without
 truth, the stated covariance kept, 3D refused; a constant odometry bias removed exactly and one that changes faster
-than the window only in part; detections dropped by their (step, index); and the table of python/results_association_oracles.py on hand-made
-metrics, its sum of the random-walk evidence summaries of several runs, and its accuracy with dropped real
-detections counted as wrong.
+than the window only in part; detections dropped by their (step, index); and the table of
+python/results_association_oracles.py on hand-made metrics, its sum of the random-walk evidence summaries of several
+runs, and its accuracy with dropped real detections counted as wrong.
 
 Usage: test_oracle_logs.py
 """

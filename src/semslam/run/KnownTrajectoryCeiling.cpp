@@ -62,6 +62,11 @@ MethodRun runOnKnownTrajectory(const MeasurementLog& log, const MethodOptions& o
   if (isHybrid(options.method)) throw std::invalid_argument("the known-trajectory ceiling is for paper B's methods");
   MethodOptions known = options;
   known.method = Method::Known;
+  // The options of the method under test that `known` refuses (it assigns nothing: no branches, no mixture to
+  // switch) are that method's, not the reference's.
+  known.switchRounds = 0;
+  known.slam.loopClosureBranchWindow.reset();
+  known.slam.loopClosureNextBest = false;
   known.poseCovariances = poseErrorScale > 0.0;
   known.runFolder = false;
   const MethodRun reference = runMethod(log, known);
