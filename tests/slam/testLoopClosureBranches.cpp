@@ -10,9 +10,10 @@
 // branch open for a few steps, the branch that kept B and E apart sees A, D and F re-sighted where they are
 // mapped, and its evidence wins.
 //
-// The third branch's scenario (--loop-closure-next-best): all five objects are mapped from the standstill, and
-// the odometry back slips 0.8 m along y (within its declared σ), so that A and D, seen alone on the return, appear
-// where B and E are mapped: the front end pairs them with B's and E's landmarks. Keeping them apart makes two
+// The third branch's scenario (--loop-closure-next-best; run with ml, whose pairings stay as the step made them):
+// all five objects are mapped from the standstill, and the odometry back slips 0.8 m along y (within its declared
+// σ), so that A and D, seen alone on the return, appear where B and E are mapped: the front end pairs them with B's
+// and E's landmarks. Keeping them apart makes two
 // duplicates; pairing them with their next-best landmarks, A's and D's own, is right, and its evidence wins once
 // F is re-sighted.
 
@@ -41,7 +42,8 @@ struct LookAlikes {
   bool lookAlikesMapped = false;  // B and E seen from the standstill too (the third branch's scenario)
   double slip = 0.0;              // the odometry's error along y over the drive back (exact when 0)
   static constexpr int kMapping = 4, kAway = 10, kBack = 10;  // steps: mapping at a standstill, away, back
-  static constexpr int kReturn = kMapping + kAway + kBack;    // the first step back: B and E alone
+  static constexpr int kReturn = kMapping + kAway + kBack;    // the first step back: B and E alone (A and D with
+                                                              // lookAlikesMapped)
 
   explicit LookAlikes(double travelSigma = 0.5) : travelSigma(travelSigma) {
     header.sensor.kind = SensorKind::RelativePosition;
