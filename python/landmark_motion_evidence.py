@@ -44,7 +44,8 @@ EXTRA_KEY_OFFSET = 10 ** 9
 
 
 def read_run(log_path, run_dir):
-    """(header, steps, poses N×3, {landmark id: position}, [(step, landmark id, range, bearing, covariance, truth)])."""
+    """(header, steps, poses N×3, {landmark id: position},
+    [(step, landmark id, range, bearing, covariance, truth, detection index within its step)])."""
     with open(log_path) as f:
         header = json.loads(next(f))
         steps = [json.loads(line) for line in f]
@@ -76,16 +77,14 @@ def read_run(log_path, run_dir):
                 continue
             k = int(r["step"])
             d = steps[k]["detections"][int(r["detection"])]
-            detections.append((k, landmark, d["geometry"][0], d["geometry"][1], d["covariance"], r["truth"]))
+            detections.append((k, landmark, d["geometry"][0], d["geometry"][1], d["covariance"], r["truth"],
+                               int(r["detection"])))
     return header, steps, np.array(poses), landmarks, detections
 
 
-def detections_on(run_dir, flagged):
-    """{(step index, detection index)} of every detection the run's associations.csv puts on a landmark in
-    `flagged`."""
-    with open(os.path.join(run_dir, "associations.csv"), newline="") as f:
-        return {(int(r["step"]), int(r["detection"])) for r in csv.DictReader(f)
-                if r["landmark"].isdigit() and int(r["landmark"]) in flagged}
+def detections_on(detections, flagged):
+    """{(step index, detection index)} of every detection of read_run's list that is on a landmark in `flagged`."""
+    return {(d[0], d[6]) for d in detections if d[1] in flagged}
 
 
 def motion_graph(header, steps, poses):
@@ -107,8 +106,8 @@ def motion_graph(header, steps, poses):
 
 
 def detection_factor(detection, landmark_key):
-    """The range-bearing factor of one detection (step, landmark, range, bearing, covariance, truth) on a key."""
-    k, _, r, bearing, covariance, _ = detection
+    """The range-bearing factor of one detection of read_run's list on a key."""
+    k, _, r, bearing, covariance = detection[:5]
     return semslam.RangeBearingFactor(semslam.pose_key(k), landmark_key, np.array([r, bearing]),
                                       semslam.NoiseModel.from_covariance(np.array(covariance)))
 
@@ -223,7 +222,7 @@ def main():
     if args.write_without_flagged:
         flagged = {landmark for landmark, delta in evidence.items() if delta > args.above}
         counts = oracle_logs.edit(args.log, args.write_without_flagged,
-                                  drop_detections=detections_on(args.run, flagged))
+                                  drop_detections=detections_on(detections, flagged))
         print(f"\nwrote {args.write_without_flagged}: {counts['detections_dropped']} detections of {len(flagged)} "
               f"landmarks with Δ > {args.above} dropped")
 

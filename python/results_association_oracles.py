@@ -11,7 +11,6 @@ through the Python module the build made), and what dropping the detections of t
 best (the log without them, re-run; a real detection dropped counts as wrong).
 """
 import concurrent.futures
-import json
 import os
 import sys
 
@@ -109,28 +108,23 @@ def accuracy_with_dropped_as_wrong(metrics, real_dropped):
     return metrics["da_accuracy_real"] * real_left / (real_left + real_dropped)
 
 
-def real_detections_among(log, dropped):
-    """How many of the (step, detection index) pairs `dropped` are detections of a true landmark in `log`."""
-    count = 0
-    with open(log) as f:
-        next(f)
-        for k, line in enumerate(f):
-            for i, detection in enumerate(json.loads(line)["detections"]):
-                count += (k, i) in dropped and detection.get("truth") not in ("not-a-landmark", "unknown", None)
-    return count
+def real_detections_on(detections, flagged):
+    """How many detections of landmark_motion_evidence.read_run's list on a landmark in `flagged` are of a true
+    landmark (truth neither clutter, `unknown` nor missing)."""
+    return sum(1 for d in detections if d[1] in flagged and d[5] not in ("not-a-landmark", "unknown", ""))
 
 
 def demotion_lines(semslam, module, recorded, evidence_of_runs, recorded_metrics):
     """For each threshold, every run's log without the detections its run left on a landmark whose Δ exceeds it,
-    run again: an upper bound on demoting flagged landmarks online (they would be found later, not at birth)."""
+    run again: an optimistic estimate of demoting flagged landmarks online (they would be found later, not at
+    birth)."""
     jobs = []
     for threshold in FLAG_THRESHOLDS:
-        for (log, run), (evidence, _) in zip(recorded, evidence_of_runs):
+        for (log, run), (evidence, detections) in zip(recorded, evidence_of_runs):
             flagged = {landmark for landmark, delta in evidence.items() if delta > threshold}
-            dropped = module.detections_on(run, flagged)
             edited = f"{run}-without-above-{threshold:g}.jsonl"
-            counts = oracle_logs.edit(log, edited, drop_detections=dropped)
-            real = real_detections_among(log, dropped)
+            counts = oracle_logs.edit(log, edited, drop_detections=module.detections_on(detections, flagged))
+            real = real_detections_on(detections, flagged)
             jobs.append((threshold, edited, edited[:-len(".jsonl")], real, counts["detections_dropped"] - real))
     with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
         list(pool.map(lambda job: run_checked([semslam, "run", "--overwrite", "--quiet", "--method", "mm-nh", "--in",
@@ -201,15 +195,15 @@ def association_oracles_section(semslam, data, scratch, shown):
               "build/bin/semslam run --method mm-nh --in edited.jsonl --out DIR --no-covariances",
               "build/bin/semslam run --method mm-nh --in rN-sS.jsonl --out DIR --no-covariances --on-known-trajectory",
               "```", ""]
-    recorded = [(log, out) for label, _, _, log, out, _ in jobs if label == VARIANTS[0][0]]
+    recorded_runs = [(log, out) for label, _, _, log, out, _ in jobs if label == VARIANTS[0][0]]
     module, missing = import_motion_evidence(semslam)
     if module is None:
         return lines + [missing, ""]
     evidence_of_runs = []
-    for log, run in recorded:
+    for log, run in recorded_runs:
         header, steps, poses, landmarks, detections = module.read_run(log, run)
         evidence_of_runs.append((module.random_walk_evidence(header, steps, poses, landmarks, detections,
                                                              MOTION_EVIDENCE_Q), detections))
-    recorded_metrics = [read_metrics(run) for _, run in recorded]
+    recorded_metrics = [read_metrics(run) for _, run in recorded_runs]
     return (lines + motion_evidence_lines(module, evidence_of_runs) +
-            demotion_lines(semslam, module, recorded, evidence_of_runs, recorded_metrics))
+            demotion_lines(semslam, module, recorded_runs, evidence_of_runs, recorded_metrics))

@@ -107,6 +107,21 @@ def run_sweep(semslam, families, scratch, windows=WINDOWS):
                         [(window, f"w{window}", ["--loop-closure-branches", str(window)]) for window in windows])
 
 
+def family_figure(kind, runs, known=None):
+    """A family's cell from its runs' metrics: MRCLAM mean `da_accuracy_real`; KITTI tracking mean
+    `da_accuracy_real` / mean moving clutter rejected; Lost in the Woods `da_accuracy_real` / ATE; a simulation: how
+    many runs end within 2 × `known` association's ATE (`known`, per run), and the mean ATE."""
+    if kind == "mrclam":
+        return mean_cell([m["da_accuracy_real"] for m in runs])
+    if kind == "tracking":
+        return (mean_cell([m.get("da_accuracy_real") for m in runs]) + " / " +
+                mean_cell([m.get("clutter_rejected_moving") for m in runs]))
+    if kind == "woods":
+        return f"{runs[0]['da_accuracy_real']:.3f} / {runs[0]['ate_rmse']:.3f}"
+    within = sum(1 for m, k in zip(runs, known) if m["ate_rmse"] <= 2.0 * k)
+    return f"{within} of {len(runs)}, {mean_cell([m['ate_rmse'] for m in runs])}"
+
+
 def sweep_tables(families, folders, windows=WINDOWS):
     """The section's tables: one row per window over every family, then each simulation's ATE per seed."""
     header = []
@@ -117,18 +132,10 @@ def sweep_tables(families, folders, windows=WINDOWS):
         cells = []
         for family, (kind, logs) in families.items():
             runs = [read_metrics(folders[(family, name, window)]) for name, _ in logs]
-            if kind == "mrclam":
-                cells.append(mean_cell([m["da_accuracy_real"] for m in runs]))
-            elif kind == "tracking":
-                cells.append(mean_cell([m.get("da_accuracy_real") for m in runs]) + " / " +
-                             mean_cell([m.get("clutter_rejected_moving") for m in runs]))
-            elif kind == "woods":
-                m = runs[0]
-                cells.append(f"{m['da_accuracy_real']:.3f} / {m['ate_rmse']:.3f} / {m['time_s']:.2f}")
-            else:
-                known = [read_metrics(folders[(family, name, "known")])["ate_rmse"] for name, _ in logs]
-                within = sum(1 for m, k in zip(runs, known) if m["ate_rmse"] <= 2.0 * k)
-                cells.append(f"{within} of {len(runs)}, {mean_cell([m['ate_rmse'] for m in runs])}")
+            known = ([read_metrics(folders[(family, name, "known")])["ate_rmse"] for name, _ in logs]
+                     if kind == "simulation" else None)
+            figure = family_figure(kind, runs, known)
+            cells.append(figure + (f" / {runs[0]['time_s']:.2f}" if kind == "woods" else ""))
             counts = [branch_splits(folders[(family, name, window)]) for name, _ in logs]
             cells.append(f"{sum(c[0] for c in counts)} / {sum(c[1] for c in counts)}")
         lines.append(f"| {window} | " + " | ".join(cells) + " |")

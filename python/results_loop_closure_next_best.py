@@ -9,8 +9,8 @@ cell comes from the runs' metrics.json and branches.csv. Used by make_results.py
 import concurrent.futures
 import os
 
-from results_commands import mean_cell, read_metrics, run_checked
-from results_loop_closure_branches import ROBOTS, branch_logs, run_variants
+from results_commands import read_metrics, run_checked
+from results_loop_closure_branches import ROBOTS, branch_logs, family_figure, run_variants
 
 VARIANTS = [("two branches (the default)", []), ("with the third branch", ["--loop-closure-next-best"])]
 EXTRA_MRCLAM = [("MRCLAM, 2 classes", ["--classes", "2", "--misclassification", "0.1"]),
@@ -47,21 +47,6 @@ def kept_counts(folder):
     return len(rows), sum(1 for row in rows if row[4] != ""), sum(1 for row in rows if row[5] == "next-best")
 
 
-def figure_of(kind, runs, known=None):
-    """A family's cell: MRCLAM mean `da_accuracy_real`; KITTI tracking mean `da_accuracy_real` / mean moving
-    clutter rejected; Lost in the Woods `da_accuracy_real` / ATE; a simulation: seeds within 2 × known's ATE, mean
-    ATE."""
-    if kind == "mrclam":
-        return mean_cell([m["da_accuracy_real"] for m in runs])
-    if kind == "tracking":
-        return (mean_cell([m.get("da_accuracy_real") for m in runs]) + " / " +
-                mean_cell([m.get("clutter_rejected_moving") for m in runs]))
-    if kind == "woods":
-        return f"{runs[0]['da_accuracy_real']:.3f} / {runs[0]['ate_rmse']:.3f}"
-    within = sum(1 for m, k in zip(runs, known) if m["ate_rmse"] <= 2.0 * k)
-    return f"{within} of {len(runs)}, {mean_cell([m['ate_rmse'] for m in runs])}"
-
-
 def paired_changes(kind, before, after):
     """`up / down`: logs where the variant's figure is higher / lower than the default's (`da_accuracy_real` for the
     real logs, lower ATE counting as up for the simulations); logs where it is undefined are left out."""
@@ -83,7 +68,7 @@ def comparison_table(families, folders):
                  if kind == "simulation" else None)
         counts = [kept_counts(folders[(family, name, len(VARIANTS) - 1)]) for name, _ in logs]
         times = " / ".join(f"{sum(m['time_s'] for m in variant):.1f}" for variant in runs)
-        lines.append(f"| {family} | " + " | ".join(figure_of(kind, variant, known) for variant in runs) +
+        lines.append(f"| {family} | " + " | ".join(family_figure(kind, variant, known) for variant in runs) +
                      f" | {paired_changes(kind, runs[0], runs[-1])} | {times} | " +
                      " / ".join(str(sum(c[i] for c in counts)) for i in range(3)) + " |")
     return lines

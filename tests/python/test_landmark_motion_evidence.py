@@ -102,7 +102,8 @@ def test_with_both_the_moving_one_has_the_larger_evidence(tmp_path):
 
 def test_the_log_without_the_flagged_landmarks_detections(tmp_path):
     log, run = write_run(str(tmp_path), landmarks=(0, 1))
-    assert lme.detections_on(run, {1}) == {(k, 1) for k in range(STEPS)}
+    detections = lme.read_run(log, run)[4]
+    assert lme.detections_on(detections, {1}) == {(k, 1) for k in range(STEPS)}
     out = str(tmp_path / "without.jsonl")
     script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python",
                           "landmark_motion_evidence.py")

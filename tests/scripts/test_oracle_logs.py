@@ -197,9 +197,12 @@ class OracleLogs(unittest.TestCase):
         self.assertAlmostEqual(section.accuracy_with_dropped_as_wrong(metrics, 0), 0.75, places=15)
         self.assertIsNone(section.accuracy_with_dropped_as_wrong({"da_total": 5, "da_clutter": 5,
                                                                   "da_accuracy_real": None}, 0))
-        # Which dropped pairs are real: truth 4 at (0, 0) and (1, 1); clutter and "unknown" are not.
-        dropped = {(0, 0), (0, 1), (1, 0), (1, 1), (2, 0), (3, 0)}
-        self.assertEqual(section.real_detections_among(self.source, dropped), 2)
+        # Which detections on the flagged landmarks are real: truth 4 twice; clutter, "unknown" and no truth are not.
+        # (step, landmark, range, bearing, covariance, truth, detection index), as landmark_motion_evidence reads them
+        detections = [(0, 1, 2.0, 0.1, None, "4", 0), (0, 1, 2.0, 0.1, None, "not-a-landmark", 1),
+                      (1, 2, 2.0, 0.1, None, "unknown", 0), (1, 2, 2.5, 0.1, None, "4", 1),
+                      (2, 3, 2.0, 0.1, None, "", 0), (3, 5, 2.0, 0.1, None, "4", 0)]
+        self.assertEqual(section.real_detections_on(detections, {1, 2, 3}), 2)
 
 
 if __name__ == "__main__":
