@@ -1,10 +1,10 @@
-"""docs/results.md section `loop-closure-next-best`: the third branch at an ambiguous loop closure
-(`--loop-closure-next-best`, docs/association-front-end.md §10), in which the anchoring detections take their
-next-best landmarks, against the default two branches, on every log family of the window sweep
+"""docs/results.md section `loop-closure-next-best`: the third branch at an ambiguous loop closure (mm-nh's default
+since session 20; docs/association-front-end.md §10), in which the anchoring detections take their next-best
+landmarks, against two branches (`--no-loop-closure-next-best`), on every log family of the window sweep
 (results_loop_closure_branches.py: MRCLAM Dataset 6 robots 1-5 × label seeds 1-3, KITTI tracking 0000-0010 at 1 Hz ×5,
 Lost in the Woods, the KITTI 00 and 07 simulations with seeds 1-8) and on MRCLAM with 2 classes and with 0 %
-misclassification (robots 1-5, label seed 1). `mm-nh` with its defaults (W = 16) and with the flag added; every
-cell comes from the runs' metrics.json and branches.csv. Used by make_results.py.
+misclassification (robots 1-5, label seed 1). `mm-nh` with its defaults (W = 16, three branches) and with the third
+branch turned off; every cell comes from the runs' metrics.json and branches.csv. Used by make_results.py.
 """
 import concurrent.futures
 import os
@@ -12,7 +12,7 @@ import os
 from results_commands import read_metrics, run_checked
 from results_loop_closure_branches import ROBOTS, branch_logs, family_figure, run_variants
 
-VARIANTS = [("two branches (the default)", []), ("with the third branch", ["--loop-closure-next-best"])]
+VARIANTS = [("two branches", ["--no-loop-closure-next-best"]), ("with the third branch (the default)", [])]
 EXTRA_MRCLAM = [("MRCLAM, 2 classes", ["--classes", "2", "--misclassification", "0.1"]),
                 ("MRCLAM, 0 %", ["--classes", "3", "--misclassification", "0"])]
 
@@ -48,7 +48,7 @@ def kept_counts(folder):
 
 
 def paired_changes(kind, before, after):
-    """`up / down`: logs where the variant's figure is higher / lower than the default's (`da_accuracy_real` for the
+    """`up / down`: logs where the third branch's figure is higher / lower than two branches' (`da_accuracy_real` for the
     real logs, lower ATE counting as up for the simulations); logs where it is undefined are left out."""
     key = "ate_rmse" if kind == "simulation" else "da_accuracy_real"
     sign = -1.0 if kind == "simulation" else 1.0
@@ -60,8 +60,8 @@ def paired_changes(kind, before, after):
 def comparison_table(families, folders):
     """One row per family: each variant's figure, the paired up / down count, both variants' total `time_s`, and
     the third branch's splits (opened / third branch opened / kept)."""
-    lines = ["| family | " + " | ".join(label for label, _ in VARIANTS) + " | up / down | time [s] (sum, default / "
-             "third) | splits / third branch opened / kept |", "|---|" + "---|" * (len(VARIANTS) + 3)]
+    lines = ["| family | " + " | ".join(label for label, _ in VARIANTS) + " | up / down | time [s] (sum, two / "
+             "three branches) | splits / third branch opened / kept |", "|---|" + "---|" * (len(VARIANTS) + 3)]
     for family, (kind, logs) in families.items():
         runs = [[read_metrics(folders[(family, name, index)]) for name, _ in logs] for index in range(len(VARIANTS))]
         known = ([read_metrics(folders[(family, name, "known")])["ate_rmse"] for name, _ in logs]
@@ -85,8 +85,9 @@ def loop_closure_next_best_section(semslam, data, scratch, shown):
                         "section skipped.", ""]
     folders = run_variants(semslam, families, scratch,
                            [(index, f"v{index}", arguments) for index, (_, arguments) in enumerate(VARIANTS)])
-    lines += ["`mm-nh` with its defaults (two branches, W = 16) and with `--loop-closure-next-best` (a third branch in "
-              "which the anchoring detections take their next-best landmarks; docs/association-front-end.md §10). "
+    lines += ["`mm-nh` with its defaults (W = 16 and a third branch in which the anchoring detections take their "
+              "next-best landmarks; docs/association-front-end.md §10) and with `--no-loop-closure-next-best` (two "
+              "branches). "
               "MRCLAM: mean `da_accuracy_real` (robots 1-5 × label seeds 1-3 at 3 classes and 10 %; robots 1-5, label "
               "seed 1, in the other two rows); KITTI tracking: mean `da_accuracy_real` / mean "
               "`clutter_rejected_moving` over 0000-0010; Lost in the Woods: `da_accuracy_real` / ATE [m]; KITTI 00 "
@@ -96,7 +97,7 @@ def loop_closure_next_best_section(semslam, data, scratch, shown):
     lines += comparison_table(families, folders)
     lines += ["", "```sh",
               shown([semslam, "run", "--method", "mm-nh", "--in", "LOG", "--out", "DIR", "--no-covariances",
-                     "[--loop-closure-next-best]"]),
+                     "[--no-loop-closure-next-best]"]),
               "```",
               "LOG: as in the window sweep above; MRCLAM with 2 classes: `semslam convert mrclam "
               "../shared/data/mrclam/MRCLAM_Dataset6 --robot N --keyframe-period 1 --classes 2 --misclassification "

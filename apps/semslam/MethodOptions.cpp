@@ -1,5 +1,6 @@
 #include "MethodOptions.h"
 
+#include <cstdint>
 #include <map>
 #include <string>
 
@@ -79,9 +80,11 @@ void addSemanticSlamOptions(CLI::App* command, SemanticSlamOptions& options) {
           "(docs/association-front-end.md §10; 0: off)")
       ->check(CLI::Range(0, 1000000))
       ->default_str(std::to_string(LoopClosureBranches::kDefaultWindow));
-  command->add_flag("--loop-closure-next-best", options.loopClosureNextBest,
-                    "with --loop-closure-branches: a third branch in which the closing detections take their "
-                    "next-best landmarks (docs/association-front-end.md §10; opt-in)");
+  command->add_flag_function(
+      "--loop-closure-next-best,!--no-loop-closure-next-best",
+      [&options](std::int64_t count) { options.loopClosureNextBest = count > 0; },
+      "with --loop-closure-branches: a third branch in which the closing detections take their next-best landmarks "
+      "(docs/association-front-end.md §10; default: on for mm-nh, off for ml and mm)");
   command->add_option("--anchoring-information", options.anchoringInformation,
                       "birth unassigned, with --loop-closure-branches: the information, ½ ln det(S R⁻¹) in nats, "
                       "above which a pairing closes a loop")

@@ -26,6 +26,12 @@ fs::path freshDirectory(const std::string& name) {
   return dir;
 }
 
+/// The whole text of `file` (empty where it cannot be read).
+std::string fileText(const fs::path& file) {
+  std::ifstream in(file);
+  return std::string((std::istreambuf_iterator<char>(in)), {});
+}
+
 }  // namespace
 
 TEST(RunCommand, AHybridMemoryBoundThatBindsIsNotedAndTheRunFinishes) {
@@ -109,9 +115,7 @@ TEST(RunCommand, MaxMixtureMethodsWriteTheRunFolderAndMetrics) {
   const fs::path again = dir / "again";
   ASSERT_EQ(runSemslam("run --method mm-nh --in \"" + log.string() + "\" --out \"" + again.string() + "\"").exitCode, 0);
   for (const char* file : {"trajectory.tum", "landmarks.csv", "associations.csv"}) {
-    std::ifstream a(dir / "mm-nh" / file), b(again / file);
-    const std::string first((std::istreambuf_iterator<char>(a)), {}), second((std::istreambuf_iterator<char>(b)), {});
-    EXPECT_EQ(first, second) << file;
+    EXPECT_EQ(fileText(dir / "mm-nh" / file), fileText(again / file)) << file;
   }
   EXPECT_EQ(runSemslam("run --method mm-nh --gate 1.5 --in \"" + log.string() + "\" --out \"" + again.string() + "\"").exitCode, 2);
   fs::remove_all(dir);
@@ -172,8 +176,8 @@ TEST(RunCommand, LoopClosureBranchesAreListedInBranchesCsv) {
   const fs::path log = dir / "run.jsonl";
   ASSERT_EQ(runSemslam("simulate semantic --steps 30 --seed 4 --out \"" + log.string() + "\"").exitCode, 0);
   const fs::path out = dir / "branched";
-  const auto result = runSemslam("run --method mm-nh --loop-closure-branches 8 --in \"" + log.string() + "\" --out \"" +
-                                 out.string() + "\"");
+  const auto result = runSemslam("run --method mm-nh --loop-closure-branches 8 --no-loop-closure-next-best --in \"" +
+                                 log.string() + "\" --out \"" + out.string() + "\"");
   ASSERT_EQ(result.exitCode, 0) << result.output;
   std::ifstream branches(out / "branches.csv");
   ASSERT_TRUE(branches) << "no branches.csv";
@@ -186,7 +190,7 @@ TEST(RunCommand, LoopClosureBranchesAreListedInBranchesCsv) {
     const BranchRow split = parseBranchRow(row);
     EXPECT_LE(split.openedAt, split.closedAfter) << row;
     EXPECT_LE(split.closedAfter, split.openedAt + 8) << row;
-    EXPECT_FALSE(split.nextBest) << row;  // the third branch is opt-in
+    EXPECT_FALSE(split.nextBest) << row;  // the third branch turned off
     EXPECT_EQ(split.kept, split.apart < split.asIs ? "apart" : "as-is") << row;
   }
   EXPECT_GE(rows, 1);
@@ -201,12 +205,19 @@ TEST(RunCommand, LoopClosureBranchesAreListedInBranchesCsv) {
                 .exitCode,
             0);
   EXPECT_FALSE(fs::exists(single / "branches.csv"));
-  // With the third branch, each row's kept branch is the one of the lowest score among those opened.
+  // With the third branch (mm-nh's default), each row's kept branch is the one of the lowest score among those
+  // opened; asking for it explicitly changes nothing.
   const fs::path nextBest = dir / "next-best";
-  ASSERT_EQ(runSemslam("run --method mm-nh --loop-closure-branches 8 --loop-closure-next-best --in \"" + log.string() +
-                       "\" --out \"" + nextBest.string() + "\"")
+  ASSERT_EQ(runSemslam("run --method mm-nh --loop-closure-branches 8 --in \"" + log.string() + "\" --out \"" +
+                       nextBest.string() + "\"")
                 .exitCode,
             0);
+  const fs::path asked = dir / "next-best-asked";
+  ASSERT_EQ(runSemslam("run --method mm-nh --loop-closure-branches 8 --loop-closure-next-best --in \"" + log.string() +
+                       "\" --out \"" + asked.string() + "\"")
+                .exitCode,
+            0);
+  EXPECT_EQ(fileText(nextBest / "branches.csv"), fileText(asked / "branches.csv"));
   std::ifstream threeWay(nextBest / "branches.csv");
   ASSERT_TRUE(threeWay) << "no branches.csv";
   std::getline(threeWay, row);

@@ -54,13 +54,13 @@ class LoopClosureNextBestSection(unittest.TestCase):
         families = {"MRCLAM": ("mrclam", [("r1", "r1.jsonl"), ("r2", "r2.jsonl")]),
                     "KITTI 00": ("simulation", [("seed 1", "s1.jsonl"), ("seed 2", "s2.jsonl")])}
         values = {("MRCLAM", "r1"): (0.4, 0.5), ("MRCLAM", "r2"): (0.6, 0.6)}
-        for (family, name), (default, third) in values.items():
-            folders[(family, name, 0)] = self.folder(f"{name}-0", {"da_accuracy_real": default})
+        for (family, name), (two, third) in values.items():
+            folders[(family, name, 0)] = self.folder(f"{name}-0", {"da_accuracy_real": two})
             folders[(family, name, 1)] = self.folder(f"{name}-1", {"da_accuracy_real": third, "time_s": 2.0},
                                                      ["5,21,1.0,2.0,0.5,next-best"])
-        ates = {"seed 1": (3.0, 1.5, 1.0), "seed 2": (1.0, 1.0, 1.0)}  # default, third, known
-        for name, (default, third, known) in ates.items():
-            folders[("KITTI 00", name, 0)] = self.folder(f"{name}-0", {"ate_rmse": default})
+        ates = {"seed 1": (3.0, 1.5, 1.0), "seed 2": (1.0, 1.0, 1.0)}  # two branches, three, known
+        for name, (two, third, known) in ates.items():
+            folders[("KITTI 00", name, 0)] = self.folder(f"{name}-0", {"ate_rmse": two})
             folders[("KITTI 00", name, 1)] = self.folder(f"{name}-1", {"ate_rmse": third})
             folders[("KITTI 00", name, "known")] = self.folder(f"{name}-k", {"ate_rmse": known})
         lines = section.comparison_table(families, folders)

@@ -116,9 +116,13 @@ void expectEveryObjectOnALandmarkOfItsOwn(const SemanticSlam& slam) {
   EXPECT_EQ(distinct.size(), 5u);
 }
 
+/// The scenario under mm-nh with two branches (A and B; the third branch, mm-nh's default, is tested on its own
+/// scenario below).
 LoopClosureBranches runScenario(int window, int steps, double travelSigma = 0.5) {
   const LookAlikes scenario(travelSigma);
-  LoopClosureBranches run(scenario.header, optionsWithWindow(window));
+  SemanticSlamOptions options = optionsWithWindow(window);
+  options.loopClosureNextBest = false;
+  LoopClosureBranches run(scenario.header, options);
   for (int k = 0; k < steps; ++k) run.addStep(scenario.step(k));
   run.finish();
   return run;
@@ -152,7 +156,7 @@ TEST(LoopClosureBranches, ABranchOpenUntilTheTrueObjectIsReSeenKeepsTheLookAlike
   EXPECT_EQ(split.closedAfter, LookAlikes::kReturn + 3);
   EXPECT_EQ(split.kept, LoopClosureBranches::Branch::Apart);
   EXPECT_LT(split.scoreB, split.scoreA);
-  EXPECT_FALSE(split.scoreC);  // not asked for
+  EXPECT_FALSE(split.scoreC);  // turned off
   // Every object's detections on one landmark of their own.
   expectEveryObjectOnALandmarkOfItsOwn(run.slam());
 }
@@ -290,13 +294,48 @@ TEST(LoopClosureBranches, TheDefaultWindowIsOnWhereBranchesApplyAndOffElsewhere)
     }
   }
   // With the default options, the scenario's loop closure opens a split (the test above keeps the look-alike apart
-  // with a window of 3).
+  // with a window of 3 and two branches).
   const LookAlikes scenario;
   LoopClosureBranches run(scenario.header, SemanticSlamOptions{});
   for (int k = 0; k < kSteps; ++k) run.addStep(scenario.step(k));
   run.finish();
   ASSERT_EQ(run.splits().size(), 1u);
   EXPECT_EQ(run.splits().front().openedAt, LookAlikes::kReturn);
+}
+
+
+TEST(LoopClosureBranches, TheNextBestBranchIsMmNhsDefaultWhereItHasBranches) {
+  for (const AssociationStrategy strategy : allStrategies()) {
+    for (const BirthRule birth : {BirthRule::Unassigned, BirthRule::Threshold}) {
+      SemanticSlamOptions options;
+      options.strategy = strategy;
+      options.birth = birth;
+      const bool branches = LoopClosureBranches::window(options) > 0;
+      EXPECT_EQ(LoopClosureBranches::nextBest(options),
+                branches && strategy == AssociationStrategy::MaxMixtureNullHypothesis)
+          << strategyName(strategy);
+      options.loopClosureBranchWindow = 0;  // no branches: no third one, and the unset default is not refused
+      EXPECT_FALSE(LoopClosureBranches::nextBest(options)) << strategyName(strategy);
+      options.loopClosureBranchWindow.reset();
+      if (!branches) continue;
+      options.loopClosureNextBest = false;  // an explicit choice holds for every method with branches
+      EXPECT_FALSE(LoopClosureBranches::nextBest(options)) << strategyName(strategy);
+      options.loopClosureNextBest = true;
+      EXPECT_TRUE(LoopClosureBranches::nextBest(options)) << strategyName(strategy);
+    }
+  }
+}
+
+TEST(LoopClosureBranches, MmNhOpensTheNextBestBranchByDefault) {
+  // The slip scenario of the third branch's tests, under mm-nh with its defaults: the split opens all three.
+  LookAlikes scenario;
+  scenario.lookAlikesMapped = true;
+  scenario.slip = 0.8;
+  LoopClosureBranches run(scenario.header, SemanticSlamOptions{});
+  for (int k = 0; k < kSteps; ++k) run.addStep(scenario.step(k));
+  run.finish();
+  ASSERT_FALSE(run.splits().empty());
+  EXPECT_TRUE(run.splits().front().scoreC);
 }
 
 }  // namespace

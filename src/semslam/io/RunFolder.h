@@ -13,10 +13,11 @@
 //                          where the log has no truth; chi2 = rᵀR⁻¹r of the detection against its landmark at the
 //                          final estimate, empty without a landmark)
 //   branches.csv           `opened_at,closed_after,score_as_is,score_apart,score_next_best,kept`: paper B's ml,
-//                          mm and mm-nh (loop-closure branches, on by default), one row per split (slam/LoopClosureBranches.h): the step that
-//                          opened it, the step after which it closed, the branches' scores (−2 ln evidence,
-//                          slam/BranchScore.h; score_next_best empty unless --loop-closure-next-best opened that
-//                          branch) and which was kept, `as-is`, `apart` or `next-best`
+//                          mm and mm-nh (loop-closure branches, on by default), one row per split
+//                          (slam/LoopClosureBranches.h): the step that opened it, the step after which it closed,
+//                          the branches' scores (−2 ln evidence, slam/BranchScore.h; score_next_best empty where
+//                          that split opened no next-best branch: mm-nh's default, --loop-closure-next-best for ml
+//                          and mm) and which was kept, `as-is`, `apart` or `next-best`
 // metrics.json is written by io/RunMetricsFile.h. Every file is written atomically (io/AtomicFile.h); a file whose
 // data is empty (no truth, no associations) is not written.
 

@@ -66,7 +66,7 @@ MethodRun runOnKnownTrajectory(const MeasurementLog& log, const MethodOptions& o
   // switch) are that method's, not the reference's.
   known.switchRounds = 0;
   known.slam.loopClosureBranchWindow.reset();
-  known.slam.loopClosureNextBest = false;
+  known.slam.loopClosureNextBest.reset();
   known.poseCovariances = poseErrorScale > 0.0;
   known.runFolder = false;
   const MethodRun reference = runMethod(log, known);

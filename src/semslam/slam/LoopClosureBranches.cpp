@@ -32,15 +32,21 @@ int LoopClosureBranches::window(const SemanticSlamOptions& options) {
                                   "strategy (known assigns nothing; gpda's factors carry EM weights)");
     }
   }
-  if (options.loopClosureNextBest && window == 0) {
+  if (options.loopClosureNextBest.value_or(false) && window == 0) {
     throw std::invalid_argument("the next-best branch is a third branch of a loop-closure split: it needs branches "
                                 "(a window > 0, the unassigned birth rule and ml, mm or mm-nh)");
   }
   return window;
 }
 
+bool LoopClosureBranches::nextBest(const SemanticSlamOptions& options) {
+  const bool branches = window(options) > 0;
+  if (options.loopClosureNextBest) return *options.loopClosureNextBest;
+  return branches && options.strategy == AssociationStrategy::MaxMixtureNullHypothesis;
+}
+
 LoopClosureBranches::LoopClosureBranches(const LogHeader& header, SemanticSlamOptions options)
-    : window_(window(options)) {
+    : window_(window(options)), nextBestBranch_(nextBest(options)) {
   main_ = std::make_unique<SemanticSlam>(header, std::move(options));
 }
 
@@ -52,7 +58,7 @@ void LoopClosureBranches::addStep(const TimeStep& step) {
   } else if (window_ > 0) {
     const std::vector<std::size_t> anchoring = main_->anchoringDetections();
     if (!anchoring.empty()) {
-      if (main_->options().loopClosureNextBest) {
+      if (nextBestBranch_) {
         nextBest_ = main_->fork();
         if (nextBest_->pairElsewhere(anchoring)) {
           nextBest_->completeStep();

@@ -10,9 +10,10 @@
 //   branch B  a fork of the run taken between the halves of step k (SemanticSlam::beginStep / completeStep), in
 //             which the anchoring detections start provisional landmarks, never merged with the landmarks they
 //             were paired with (SemanticSlam::keepApart).
-//   branch C  (SemanticSlamOptions::loopClosureNextBest, opt-in) a fork in which the anchoring detections may not
-//             take the landmarks they were paired with, so they take their next-best ones
-//             (SemanticSlam::pairElsewhere): the other look-alike; opened only where some detection then has one.
+//   branch C  (SemanticSlamOptions::loopClosureNextBest; on by default for mm-nh, nextBest()) a fork in which the
+//             anchoring detections may not take the landmarks they were paired with, so they take their next-best
+//             ones (SemanticSlam::pairElsewhere): the other look-alike; opened only where some detection then has
+//             one.
 // All take steps k+1 … k+W (W = SemanticSlamOptions::loopClosureBranchWindow); then the branch with the lowest
 // BranchScore (−2 ln of its evidence, BranchScore.h) is kept and the others dropped; a split still open at the end
 // of the log is closed by finish(). At most one split is open at a time: an anchoring step during an open split is
@@ -66,6 +67,11 @@ class LoopClosureBranches {
   /// loopClosureNextBest without branches.
   static int window(const SemanticSlamOptions& options);
 
+  /// Whether splits open branch C: loopClosureNextBest if set, else on for mm-nh wherever window() > 0 and off
+  /// elsewhere (docs/association-front-end.md §10: mm-nh gains on MRCLAM and the KITTI 00 simulation, ml loses on
+  /// MRCLAM; equal on the other logs). Throws as window() does.
+  static bool nextBest(const SemanticSlamOptions& options);
+
   /// Throws as window() does.
   LoopClosureBranches(const LogHeader& header, SemanticSlamOptions options);
 
@@ -83,6 +89,7 @@ class LoopClosureBranches {
   void closeSplit();
 
   int window_;
+  bool nextBestBranch_;
   std::unique_ptr<SemanticSlam> main_;
   std::unique_ptr<SemanticSlam> alternative_;
   std::unique_ptr<SemanticSlam> nextBest_;

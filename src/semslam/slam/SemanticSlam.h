@@ -128,8 +128,9 @@ struct SemanticSlamOptions {
   /// with ml, mm or mm-nh), none elsewhere.
   std::optional<int> loopClosureBranchWindow;
   /// §10: a third branch at each split, in which the anchoring detections take their next-best landmarks
-  /// (SemanticSlam::pairElsewhere); opt-in
-  bool loopClosureNextBest = false;
+  /// (SemanticSlam::pairElsewhere). Unset: on for mm-nh wherever it has branches, off elsewhere
+  /// (LoopClosureBranches::nextBest).
+  std::optional<bool> loopClosureNextBest;
 };
 
 /// What became of one detection.
