@@ -64,7 +64,7 @@ class LoopClosureBranches {
 
   /// The window `options` ask for: loopClosureBranchWindow if set, else kDefaultWindow where branches apply and 0
   /// elsewhere. Throws std::invalid_argument for a negative window, a positive one where branches do not apply, or
-  /// loopClosureNextBest without branches.
+  /// loopClosureNextBest set to true without branches.
   static int window(const SemanticSlamOptions& options);
 
   /// Whether splits open branch C: loopClosureNextBest if set, else on for mm-nh wherever window() > 0 and off
