@@ -10,12 +10,11 @@
 // branch open for a few steps, the branch that kept B and E apart sees A, D and F re-sighted where they are
 // mapped, and its evidence wins.
 //
-// The third branch's scenario (--loop-closure-next-best; run with ml, whose pairings stay as the step made them):
-// all five objects are mapped from the standstill, and the odometry back slips 0.8 m along y (within its declared
-// σ), so that A and D, seen alone on the return, appear where B and E are mapped: the front end pairs them with B's
-// and E's landmarks. Keeping them apart makes two
-// duplicates; pairing them with their next-best landmarks, A's and D's own, is right, and its evidence wins once
-// F is re-sighted.
+// The third branch's scenario (mm-nh's default, --loop-closure-next-best for ml; run with ml, whose pairings stay
+// as the step made them): all five objects are mapped from the standstill, and the odometry back slips 0.8 m along
+// y (within its declared σ), so that A and D, seen alone on the return, appear where B and E are mapped: the front
+// end pairs them with B's and E's landmarks. Keeping them apart makes two duplicates; pairing them with their
+// next-best landmarks, A's and D's own, is right, and its evidence wins once F is re-sighted.
 
 #include <gtest/gtest.h>
 
@@ -24,6 +23,7 @@
 #include <numbers>
 #include <optional>
 #include <set>
+#include <vector>
 #include <stdexcept>
 
 #include "EstimateEquality.h"
@@ -170,12 +170,11 @@ SemanticSlamOptions slipOptions(int window, bool nextBest) {
   return options;
 }
 
-/// The third branch's scenario run with branches of window `window`, the third branch on or off.
-LoopClosureBranches runSlipScenario(int window, bool nextBest) {
+/// The third branch's scenario run with `options`.
+LoopClosureBranches runSlipScenario(const SemanticSlamOptions& options) {
   LookAlikes scenario;
   scenario.lookAlikesMapped = true;
   scenario.slip = 0.8;
-  const SemanticSlamOptions options = slipOptions(window, nextBest);
   LoopClosureBranches run(scenario.header, options);
   for (int k = 0; k < kSteps; ++k) run.addStep(scenario.step(k));
   run.finish();
@@ -184,7 +183,7 @@ LoopClosureBranches runSlipScenario(int window, bool nextBest) {
 
 TEST(LoopClosureBranches, WithoutTheThirdBranchTheSlipPairsEachObjectWithItsLookAlike) {
   for (const bool branches : {false, true}) {
-    const LoopClosureBranches run = runSlipScenario(branches ? 3 : 0, false);
+    const LoopClosureBranches run = runSlipScenario(slipOptions(branches ? 3 : 0, false));
     const SemanticSlam& slam = run.slam();
     const std::optional<int> landmarkOfB = slam.chosenAssociation(recordOf(slam, 0, kB)).first;
     const std::optional<int> landmarkOfA = slam.chosenAssociation(recordOf(slam, 0, kA)).first;
@@ -196,7 +195,7 @@ TEST(LoopClosureBranches, WithoutTheThirdBranchTheSlipPairsEachObjectWithItsLook
 }
 
 TEST(LoopClosureBranches, TheThirdBranchPairsTheReturnWithTheNextBestLandmarksAndWins) {
-  const LoopClosureBranches run = runSlipScenario(3, true);
+  const LoopClosureBranches run = runSlipScenario(slipOptions(3, true));
   ASSERT_EQ(run.splits().size(), 1u);
   const LoopClosureBranches::Split& split = run.splits().front();
   EXPECT_EQ(split.openedAt, LookAlikes::kReturn);
@@ -279,19 +278,29 @@ TEST(LoopClosureBranches, AWindowNeedsTheJointAssignmentAndFactorsThatAreTheLike
   EXPECT_EQ(LoopClosureBranches::window(options), LoopClosureBranches::kDefaultWindow);
 }
 
-TEST(LoopClosureBranches, TheDefaultWindowIsOnWhereBranchesApplyAndOffElsewhere) {
+/// The default options with each strategy and each birth rule.
+std::vector<SemanticSlamOptions> everyStrategyAndBirthRule() {
+  std::vector<SemanticSlamOptions> all;
   for (const AssociationStrategy strategy : allStrategies()) {
     for (const BirthRule birth : {BirthRule::Unassigned, BirthRule::Threshold}) {
       SemanticSlamOptions options;
       options.strategy = strategy;
       options.birth = birth;
-      const bool applies = birth == BirthRule::Unassigned && strategy != AssociationStrategy::Known &&
-                           strategy != AssociationStrategy::Gpda;
-      EXPECT_EQ(LoopClosureBranches::window(options), applies ? LoopClosureBranches::kDefaultWindow : 0)
-          << strategyName(strategy);
-      options.loopClosureBranchWindow = 0;  // off is accepted everywhere
-      EXPECT_EQ(LoopClosureBranches::window(options), 0);
+      all.push_back(options);
     }
+  }
+  return all;
+}
+
+TEST(LoopClosureBranches, TheDefaultWindowIsOnWhereBranchesApplyAndOffElsewhere) {
+  for (SemanticSlamOptions options : everyStrategyAndBirthRule()) {
+    const AssociationStrategy strategy = options.strategy;
+    const bool applies = options.birth == BirthRule::Unassigned && strategy != AssociationStrategy::Known &&
+                         strategy != AssociationStrategy::Gpda;
+    EXPECT_EQ(LoopClosureBranches::window(options), applies ? LoopClosureBranches::kDefaultWindow : 0)
+        << strategyName(strategy);
+    options.loopClosureBranchWindow = 0;  // off is accepted everywhere
+    EXPECT_EQ(LoopClosureBranches::window(options), 0);
   }
   // With the default options, the scenario's loop closure opens a split (the test above keeps the look-alike apart
   // with a window of 3 and two branches).
@@ -303,37 +312,27 @@ TEST(LoopClosureBranches, TheDefaultWindowIsOnWhereBranchesApplyAndOffElsewhere)
   EXPECT_EQ(run.splits().front().openedAt, LookAlikes::kReturn);
 }
 
-
 TEST(LoopClosureBranches, TheNextBestBranchIsMmNhsDefaultWhereItHasBranches) {
-  for (const AssociationStrategy strategy : allStrategies()) {
-    for (const BirthRule birth : {BirthRule::Unassigned, BirthRule::Threshold}) {
-      SemanticSlamOptions options;
-      options.strategy = strategy;
-      options.birth = birth;
-      const bool branches = LoopClosureBranches::window(options) > 0;
-      EXPECT_EQ(LoopClosureBranches::nextBest(options),
-                branches && strategy == AssociationStrategy::MaxMixtureNullHypothesis)
-          << strategyName(strategy);
-      options.loopClosureBranchWindow = 0;  // no branches: no third one, and the unset default is not refused
-      EXPECT_FALSE(LoopClosureBranches::nextBest(options)) << strategyName(strategy);
-      options.loopClosureBranchWindow.reset();
-      if (!branches) continue;
-      options.loopClosureNextBest = false;  // an explicit choice holds for every method with branches
-      EXPECT_FALSE(LoopClosureBranches::nextBest(options)) << strategyName(strategy);
-      options.loopClosureNextBest = true;
-      EXPECT_TRUE(LoopClosureBranches::nextBest(options)) << strategyName(strategy);
-    }
+  for (SemanticSlamOptions options : everyStrategyAndBirthRule()) {
+    const AssociationStrategy strategy = options.strategy;
+    const bool branches = LoopClosureBranches::window(options) > 0;
+    EXPECT_EQ(LoopClosureBranches::nextBest(options),
+              branches && strategy == AssociationStrategy::MaxMixtureNullHypothesis)
+        << strategyName(strategy);
+    options.loopClosureBranchWindow = 0;  // no branches: no third one, and the unset default is not refused
+    EXPECT_FALSE(LoopClosureBranches::nextBest(options)) << strategyName(strategy);
+    options.loopClosureBranchWindow.reset();
+    if (!branches) continue;
+    options.loopClosureNextBest = false;  // an explicit choice holds for every method with branches
+    EXPECT_FALSE(LoopClosureBranches::nextBest(options)) << strategyName(strategy);
+    options.loopClosureNextBest = true;
+    EXPECT_TRUE(LoopClosureBranches::nextBest(options)) << strategyName(strategy);
   }
 }
 
 TEST(LoopClosureBranches, MmNhOpensTheNextBestBranchByDefault) {
   // The slip scenario of the third branch's tests, under mm-nh with its defaults: the split opens all three.
-  LookAlikes scenario;
-  scenario.lookAlikesMapped = true;
-  scenario.slip = 0.8;
-  LoopClosureBranches run(scenario.header, SemanticSlamOptions{});
-  for (int k = 0; k < kSteps; ++k) run.addStep(scenario.step(k));
-  run.finish();
+  const LoopClosureBranches run = runSlipScenario(SemanticSlamOptions{});
   ASSERT_FALSE(run.splits().empty());
   EXPECT_TRUE(run.splits().front().scoreC);
 }
