@@ -48,8 +48,8 @@ def kept_counts(folder):
 
 
 def paired_changes(kind, before, after):
-    """`up / down`: logs where the third branch's figure is higher / lower than two branches' (`da_accuracy_real` for the
-    real logs, lower ATE counting as up for the simulations); logs where it is undefined are left out."""
+    """`up / down`: logs where the third branch's figure is higher / lower than two branches' (`da_accuracy_real`
+    for the real logs, lower ATE counting as up for the simulations); logs where it is undefined are left out."""
     key = "ate_rmse" if kind == "simulation" else "da_accuracy_real"
     sign = -1.0 if kind == "simulation" else 1.0
     pairs = [(b.get(key), a.get(key)) for b, a in zip(before, after)]
