@@ -26,6 +26,7 @@ import results_hybrid_scaling
 import results_kitti_tracking
 import results_loop_closure_branches
 import results_loop_closure_next_best
+import results_loop_closure_open_splits
 import results_max_mixtures
 import results_studies_mpi
 
@@ -313,7 +314,7 @@ def bounded_memory_lines(semslam, data, scratch, litw):
 
 SECTIONS = ["pose-graphs", "evo", "datasets", "hybrid", "hybrid-mrclam", "hybrid-scaling", "max-mixtures",
             "robustness", "association", "association-oracles", "association-defaults", "loop-closure-branches",
-            "loop-closure-next-best", "kitti-tracking", "back-ends", "studies-mpi"]
+            "loop-closure-next-best", "loop-closure-open-splits", "kitti-tracking", "back-ends", "studies-mpi"]
 
 
 def section_lines(name, semslam, data, scratch):
@@ -345,6 +346,9 @@ def section_lines(name, semslam, data, scratch):
     elif name == "loop-closure-next-best":
         body = results_loop_closure_next_best.loop_closure_next_best_section(semslam, data, scratch,
                                                                              lambda command: shown(command, data))
+    elif name == "loop-closure-open-splits":
+        body = results_loop_closure_open_splits.loop_closure_open_splits_section(semslam, data, scratch,
+                                                                                 lambda command: shown(command, data))
     elif name == "kitti-tracking":
         body = results_kitti_tracking.kitti_tracking_section(semslam, data, scratch,
                                                              lambda command: shown(command, data), sys.executable)

@@ -48,8 +48,8 @@ def kept_counts(folder):
 
 
 def paired_changes(kind, before, after):
-    """`up / down`: logs where the third branch's figure is higher / lower than two branches' (`da_accuracy_real`
-    for the real logs, lower ATE counting as up for the simulations); logs where it is undefined are left out."""
+    """`up / down`: logs where the figure `after` is higher / lower than `before` (`da_accuracy_real` for the real
+    logs, lower ATE counting as up for the simulations); logs where it is undefined are left out."""
     key = "ate_rmse" if kind == "simulation" else "da_accuracy_real"
     sign = -1.0 if kind == "simulation" else 1.0
     pairs = [(b.get(key), a.get(key)) for b, a in zip(before, after)]
@@ -57,20 +57,26 @@ def paired_changes(kind, before, after):
     return f"{sum(1 for b, a in pairs if sign * (a - b) > 0)} / {sum(1 for b, a in pairs if sign * (a - b) < 0)}"
 
 
-def comparison_table(families, folders):
-    """One row per family: each variant's figure, the paired up / down count, both variants' total `time_s`, and
-    the third branch's splits (opened / third branch opened / kept)."""
-    lines = ["| family | " + " | ".join(label for label, _ in VARIANTS) + " | up / down | time [s] (sum, two / "
-             "three branches) | splits / third branch opened / kept |", "|---|" + "---|" * (len(VARIANTS) + 3)]
+def third_branch_counts(variant_folders):
+    """The cell "splits / third branch opened / kept" of the last variant's runs (one folder list per variant)."""
+    counts = [kept_counts(folder) for folder in variant_folders[-1]]
+    return " / ".join(str(sum(c[i] for c in counts)) for i in range(3))
+
+
+def comparison_table(families, folders, variants=VARIANTS, times_header="two / three branches",
+                     counts_header="splits / third branch opened / kept", counts=third_branch_counts):
+    """One row per family: each variant's figure, the paired up / down count (last variant against the first),
+    every variant's total `time_s`, and the cell `counts` makes from the runs' folders (one list per variant)."""
+    lines = ["| family | " + " | ".join(label for label, _ in variants) + " | up / down | time [s] (sum, "
+             f"{times_header}) | {counts_header} |", "|---|" + "---|" * (len(variants) + 3)]
     for family, (kind, logs) in families.items():
-        runs = [[read_metrics(folders[(family, name, index)]) for name, _ in logs] for index in range(len(VARIANTS))]
+        variant_folders = [[folders[(family, name, index)] for name, _ in logs] for index in range(len(variants))]
+        runs = [[read_metrics(folder) for folder in variant] for variant in variant_folders]
         known = ([read_metrics(folders[(family, name, "known")])["ate_rmse"] for name, _ in logs]
                  if kind == "simulation" else None)
-        counts = [kept_counts(folders[(family, name, len(VARIANTS) - 1)]) for name, _ in logs]
         times = " / ".join(f"{sum(m['time_s'] for m in variant):.1f}" for variant in runs)
         lines.append(f"| {family} | " + " | ".join(family_figure(kind, variant, known) for variant in runs) +
-                     f" | {paired_changes(kind, runs[0], runs[-1])} | {times} | " +
-                     " / ".join(str(sum(c[i] for c in counts)) for i in range(3)) + " |")
+                     f" | {paired_changes(kind, runs[0], runs[-1])} | {times} | {counts(variant_folders)} |")
     return lines
 
 

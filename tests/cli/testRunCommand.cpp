@@ -171,6 +171,13 @@ BranchRow parseBranchRow(const std::string& row) {
   return split;
 }
 
+/// The branch of the row's lowest score, the earlier on a tie (as-is, apart, next-best): the one to keep.
+std::string lowestBranch(const BranchRow& split) {
+  std::string lowest = split.apart < split.asIs ? "apart" : "as-is";
+  if (split.nextBest && *split.nextBest < std::min(split.asIs, split.apart)) lowest = "next-best";
+  return lowest;
+}
+
 TEST(RunCommand, LoopClosureBranchesAreListedInBranchesCsv) {
   // This log's first re-sightings anchor (the pose after one step of odometry is known less well than the
   // sensor resolves): a split opens, and branches.csv lists it with the branch its score chose.
@@ -193,7 +200,7 @@ TEST(RunCommand, LoopClosureBranchesAreListedInBranchesCsv) {
     EXPECT_LE(split.openedAt, split.closedAfter) << row;
     EXPECT_LE(split.closedAfter, split.openedAt + 8) << row;
     EXPECT_FALSE(split.nextBest) << row;  // the third branch turned off
-    EXPECT_EQ(split.kept, split.apart < split.asIs ? "apart" : "as-is") << row;
+    EXPECT_EQ(split.kept, lowestBranch(split)) << row;
   }
   EXPECT_GE(rows, 1);
   // The default window (16) splits too; with 0, nothing branches and no branches.csv is written.
@@ -236,21 +243,32 @@ TEST(RunCommand, LoopClosureBranchesAreListedInBranchesCsv) {
   EXPECT_EQ(fileText(nextBest / "branches.csv"), fileText(asked / "branches.csv"));
   int nextBestOpened = 0;
   for (const BranchRow& split : branchRows(nextBest)) {
-    std::string lowest = split.apart < split.asIs ? "apart" : "as-is";
-    if (split.nextBest && *split.nextBest < std::min(split.asIs, split.apart)) lowest = "next-best";
-    EXPECT_EQ(split.kept, lowest);
+    EXPECT_EQ(split.kept, lowestBranch(split));
     if (split.nextBest) ++nextBestOpened;
   }
   EXPECT_GE(nextBestOpened, 1) << "the third branch opened nowhere: this log no longer tests it";
   for (const BranchRow& split : branchRows(twoBranches)) EXPECT_FALSE(split.nextBest);
   EXPECT_NE(fileText(nextBest / "associations.csv"), fileText(twoBranches / "associations.csv"))
       << "the kept third branch changes the run's outcome";
+  // Splits within splits (--loop-closure-open-splits): 1 is the default; with 2, a split opens inside the first
+  // split's branch A on this log (its score is then that of A's lower leaf) and every row still keeps its lowest.
+  EXPECT_EQ(fileText(runNoisy("one-open", "--loop-closure-open-splits 1") / "branches.csv"),
+            fileText(nextBest / "branches.csv"));
+  const fs::path twoOpen = runNoisy("two-open", "--loop-closure-open-splits 2");
+  EXPECT_NE(fileText(twoOpen / "branches.csv"), fileText(nextBest / "branches.csv"));
+  for (const BranchRow& split : branchRows(twoOpen)) {
+    EXPECT_EQ(split.kept, lowestBranch(split));
+  }
   // Branches need the joint assignment, factors that are the likelihood, and a window of at least 0 steps.
   for (const std::string flags :
        {"--method known --loop-closure-branches 8", "--method gpda --loop-closure-branches 8",
         "--method mm-nh --birth threshold --loop-closure-branches 8", "--method mm-nh --loop-closure-branches -1",
         // The next-best branch is a third branch of a split.
         "--method mm-nh --loop-closure-branches 0 --loop-closure-next-best", "--method gpda --loop-closure-next-best",
+        // Open splits: at least one, and more than one needs branches.
+        "--method mm-nh --loop-closure-open-splits 0",
+        "--method mm-nh --loop-closure-branches 0 --loop-closure-open-splits 2",
+        "--method gpda --loop-closure-open-splits 2",
         // Switch rounds (RunMethod.h): a mixture to switch and the incremental back end.
         "--method ml --switch-rounds 5", "--method mm --smoother batch --switch-rounds 5",
         "--method mm-nh --switch-rounds -1",

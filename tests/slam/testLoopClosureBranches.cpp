@@ -18,6 +18,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -335,6 +336,90 @@ TEST(LoopClosureBranches, MmNhOpensTheNextBestBranchByDefault) {
   const LoopClosureBranches run = runSlipScenario(SemanticSlamOptions{});
   ASSERT_FALSE(run.splits().empty());
   EXPECT_TRUE(run.splits().front().scoreC);
+}
+
+
+/// A run of `scenario` with `options`, and the number of open branches after each step.
+struct TracedRun {
+  LoopClosureBranches run;
+  std::vector<std::size_t> openBranches;
+};
+
+TracedRun runTraced(const LookAlikes& scenario, const SemanticSlamOptions& options) {
+  TracedRun traced{LoopClosureBranches(scenario.header, options), {}};
+  for (int k = 0; k < kSteps; ++k) {
+    traced.run.addStep(scenario.step(k));
+    traced.openBranches.push_back(traced.run.openBranches());
+  }
+  traced.run.finish();
+  return traced;
+}
+
+TEST(LoopClosureBranches, WithTwoOpenSplitsABranchSplitsAgainAndEachSplitKeepsItsLowestLeaf) {
+  // The first scenario, two branches per split. Branch B of the return's split kept the look-alikes apart, so at
+  // the next step its re-sightings of A, D and F, made from a pose known to 2 m, anchor: with one split at a time
+  // they are decided as without branches; with two, branch B splits again.
+  const LookAlikes scenario;
+  SemanticSlamOptions options = optionsWithWindow(3);
+  options.loopClosureNextBest = false;
+  const TracedRun one = runTraced(scenario, options);
+  options.loopClosureOpenSplits = 2;
+  const TracedRun two = runTraced(scenario, options);
+  const int k = LookAlikes::kReturn;
+  EXPECT_EQ(*std::max_element(one.openBranches.begin(), one.openBranches.end()), 2u);
+  EXPECT_EQ(std::vector<std::size_t>(two.openBranches.begin() + k - 1, two.openBranches.begin() + k + 5),
+            (std::vector<std::size_t>{1, 2, 3, 3, 2, 1}));  // the second split closes with the log's last step
+  ASSERT_EQ(one.run.splits().size(), 1u);
+  ASSERT_EQ(two.run.splits().size(), 2u);
+  EXPECT_EQ(two.run.splits()[0].openedAt, k);
+  EXPECT_EQ(two.run.splits()[1].openedAt, k + 1);
+  for (const LoopClosureBranches::Split& split : two.run.splits()) {
+    EXPECT_EQ(split.closedAfter, split.openedAt + 3);
+    EXPECT_EQ(split.kept, split.scoreB < split.scoreA ? LoopClosureBranches::Branch::Apart
+                                                       : LoopClosureBranches::Branch::AsIs);
+  }
+  // The outer split sees branch B through its lowest leaf, which at its close is the inner split's branch A: the
+  // run of one split at a time, whose score it is, bit for bit.
+  EXPECT_EQ(two.run.splits()[0].scoreB, one.run.splits()[0].scoreB);
+  EXPECT_EQ(two.run.splits()[0].kept, LoopClosureBranches::Branch::Apart);
+  EXPECT_EQ(two.run.splits()[1].kept, LoopClosureBranches::Branch::AsIs);
+  expectSameEstimate(two.run.slam().smoother().estimate(), one.run.slam().smoother().estimate());
+  expectEveryObjectOnALandmarkOfItsOwn(two.run.slam());
+}
+
+TEST(LoopClosureBranches, ASplitOpenOnlyInADroppedBranchIsDroppedWithIt) {
+  // The third branch's scenario with two open splits: a second split opens inside the return's split (five open
+  // branches), then the return's split keeps its third branch, in which none opened: the inner split goes with the
+  // branch it opened in, is not listed, and the run is that of one split at a time, bit for bit.
+  LookAlikes scenario;
+  scenario.lookAlikesMapped = true;
+  scenario.slip = 0.8;
+  SemanticSlamOptions options = slipOptions(3, true);
+  const TracedRun one = runTraced(scenario, options);
+  options.loopClosureOpenSplits = 2;
+  const TracedRun two = runTraced(scenario, options);
+  const int k = LookAlikes::kReturn;
+  EXPECT_EQ(std::vector<std::size_t>(two.openBranches.begin() + k - 1, two.openBranches.begin() + k + 4),
+            (std::vector<std::size_t>{1, 3, 5, 5, 1}));
+  ASSERT_EQ(two.run.splits().size(), 1u);
+  EXPECT_EQ(two.run.splits()[0].kept, LoopClosureBranches::Branch::NextBest);
+  EXPECT_EQ(two.run.splits()[0].scoreC, one.run.splits()[0].scoreC);
+  expectSameEstimate(two.run.slam().smoother().estimate(), one.run.slam().smoother().estimate());
+}
+
+TEST(LoopClosureBranches, OpenSplitsAreAtLeastOneAndMoreThanOneNeedBranches) {
+  SemanticSlamOptions options;
+  EXPECT_EQ(LoopClosureBranches::maximumOpenSplits(options), 1);
+  options.loopClosureOpenSplits = 0;
+  EXPECT_THROW(LoopClosureBranches(LookAlikes().header, options), std::invalid_argument);
+  options.loopClosureOpenSplits = 2;
+  EXPECT_EQ(LoopClosureBranches::maximumOpenSplits(options), 2);
+  options.loopClosureBranchWindow = 0;
+  EXPECT_THROW(LoopClosureBranches(LookAlikes().header, options), std::invalid_argument);
+  options = SemanticSlamOptions{};
+  options.strategy = AssociationStrategy::Gpda;
+  options.loopClosureOpenSplits = 2;
+  EXPECT_THROW(LoopClosureBranches(LookAlikes().header, options), std::invalid_argument);
 }
 
 }  // namespace

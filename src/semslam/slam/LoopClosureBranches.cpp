@@ -1,5 +1,7 @@
 #include "semslam/slam/LoopClosureBranches.h"
 
+#include <algorithm>
+#include <iterator>
 #include <stdexcept>
 
 #include "semslam/slam/BranchScore.h"
@@ -45,61 +47,111 @@ bool LoopClosureBranches::nextBest(const SemanticSlamOptions& options) {
   return branches && options.strategy == AssociationStrategy::MaxMixtureNullHypothesis;
 }
 
+int LoopClosureBranches::maximumOpenSplits(const SemanticSlamOptions& options) {
+  const int maximum = options.loopClosureOpenSplits;
+  if (maximum < 1) throw std::invalid_argument("loop-closure open splits must be >= 1");
+  if (maximum > 1 && window(options) == 0) {
+    throw std::invalid_argument("more than one open split (splits within splits) needs branches (a window > 0, the "
+                                "unassigned birth rule and ml, mm or mm-nh)");
+  }
+  return maximum;
+}
+
 LoopClosureBranches::LoopClosureBranches(const LogHeader& header, SemanticSlamOptions options)
-    : window_(window(options)), nextBestBranch_(nextBest(options)) {
-  main_ = std::make_unique<SemanticSlam>(header, std::move(options));
+    : window_(window(options)), nextBestBranch_(nextBest(options)), maximumOpenSplits_(maximumOpenSplits(options)) {
+  leaves_.push_back({std::make_unique<SemanticSlam>(header, std::move(options)), {}});
 }
 
 void LoopClosureBranches::addStep(const TimeStep& step) {
-  main_->beginStep(step);
-  if (alternative_) {
-    alternative_->addStep(step);
-    if (nextBest_) nextBest_->addStep(step);
-  } else if (window_ > 0) {
-    const std::vector<std::size_t> anchoring = main_->anchoringDetections();
-    if (!anchoring.empty()) {
-      if (nextBestBranch_) {
-        nextBest_ = main_->fork();
-        if (nextBest_->pairElsewhere(anchoring)) {
-          nextBest_->completeStep();
-        } else {
-          nextBest_.reset();
-        }
-      }
-      alternative_ = main_->fork();
-      alternative_->keepApart(anchoring);
-      alternative_->completeStep();
-      splits_.push_back({main_->steps() - 1, 0, 0.0, 0.0, std::nullopt, Branch::AsIs});
-    }
-  }
-  main_->completeStep();
-  if (alternative_ && main_->steps() - 1 - splits_.back().openedAt >= window_) closeSplit();
+  for (std::size_t leaf = 0; leaf < leaves_.size();) leaf += 1 + advance(leaf, step);
+  while (!open_.empty() && slam().steps() - 1 - open_.front().split.openedAt >= window_) closeOldestSplit();
 }
 
-void LoopClosureBranches::closeSplit() {
-  Split& split = splits_.back();
-  split.closedAfter = main_->steps() - 1;
-  split.scoreA = branchScore(*main_);
-  split.scoreB = branchScore(*alternative_);
-  if (nextBest_) split.scoreC = branchScore(*nextBest_);
+std::size_t LoopClosureBranches::advance(std::size_t leaf, const TimeStep& step) {
+  SemanticSlam& run = *leaves_[leaf].run;
+  run.beginStep(step);
+  std::vector<Leaf> branches;  // B, then C where it opens
+  if (window_ > 0 && static_cast<int>(open_.size()) < maximumOpenSplits_) {
+    const std::vector<std::size_t> anchoring = run.anchoringDetections();
+    if (!anchoring.empty()) {
+      const int id = nextSplitId_++;
+      std::vector<std::pair<int, Branch>> lineage = leaves_[leaf].lineage;
+      Leaf apart{run.fork(), lineage};
+      apart.lineage.emplace_back(id, Branch::Apart);
+      apart.run->keepApart(anchoring);
+      apart.run->completeStep();
+      branches.push_back(std::move(apart));
+      if (nextBestBranch_) {
+        Leaf nextBest{run.fork(), lineage};
+        nextBest.lineage.emplace_back(id, Branch::NextBest);
+        if (nextBest.run->pairElsewhere(anchoring)) {
+          nextBest.run->completeStep();
+          branches.push_back(std::move(nextBest));
+        }
+      }
+      leaves_[leaf].lineage.emplace_back(id, Branch::AsIs);
+      open_.push_back({id, {run.steps() - 1, 0, 0.0, 0.0, std::nullopt, Branch::AsIs}});
+    }
+  }
+  run.completeStep();
+  const std::size_t added = branches.size();
+  leaves_.insert(leaves_.begin() + static_cast<std::ptrdiff_t>(leaf) + 1, std::make_move_iterator(branches.begin()),
+                 std::make_move_iterator(branches.end()));
+  return added;
+}
+
+void LoopClosureBranches::closeOldestSplit() {
+  const int id = open_.front().id;
+  Split split = open_.front().split;
+  open_.erase(open_.begin());
+  split.closedAfter = slam().steps() - 1;
+  // Each branch scores as its lowest-scoring leaf.
+  const auto branchOf = [id](const Leaf& leaf) {
+    for (const auto& [splitId, branch] : leaf.lineage) {
+      if (splitId == id) return std::optional<Branch>(branch);
+    }
+    return std::optional<Branch>();
+  };
+  std::optional<double> scores[3];
+  for (const Leaf& leaf : leaves_) {
+    const std::optional<Branch> branch = branchOf(leaf);
+    if (!branch) continue;
+    std::optional<double>& score = scores[static_cast<int>(*branch)];
+    const double leafScore = branchScore(*leaf.run);
+    if (!score || leafScore < *score) score = leafScore;
+  }
+  split.scoreA = scores[static_cast<int>(Branch::AsIs)].value();
+  split.scoreB = scores[static_cast<int>(Branch::Apart)].value();
+  split.scoreC = scores[static_cast<int>(Branch::NextBest)];
   // The lowest score; on a tie the earlier branch (A before B before C).
   double best = split.scoreA;
   if (split.scoreB < best) {
     best = split.scoreB;
     split.kept = Branch::Apart;
-    main_ = std::move(alternative_);
   }
-  if (split.scoreC && *split.scoreC < best) {
-    split.kept = Branch::NextBest;
-    main_ = std::move(nextBest_);
+  if (split.scoreC && *split.scoreC < best) split.kept = Branch::NextBest;
+  // Drop the leaves below the other branches, and the splits open only among them.
+  std::vector<Leaf> kept;
+  for (Leaf& leaf : leaves_) {
+    const std::optional<Branch> branch = branchOf(leaf);
+    if (branch && *branch != split.kept) continue;
+    std::erase_if(leaf.lineage, [id](const std::pair<int, Branch>& entry) { return entry.first == id; });
+    kept.push_back(std::move(leaf));
   }
-  alternative_.reset();
-  nextBest_.reset();
+  leaves_ = std::move(kept);
+  std::erase_if(open_, [this](const OpenSplit& open) {
+    return std::none_of(leaves_.begin(), leaves_.end(), [&open](const Leaf& leaf) {
+      return std::any_of(leaf.lineage.begin(), leaf.lineage.end(),
+                         [&open](const std::pair<int, Branch>& entry) { return entry.first == open.id; });
+    });
+  });
+  splits_.push_back(split);
 }
 
 void LoopClosureBranches::finish() {
-  if (alternative_) closeSplit();
-  main_->finish();
+  while (!open_.empty()) closeOldestSplit();
+  if (leaves_.size() != 1) throw std::logic_error("LoopClosureBranches: more than one branch after every split closed");
+  leaves_.front().run->finish();
 }
 
 }  // namespace semslam

@@ -16,10 +16,19 @@
 //             one.
 // All take steps k+1 … k+W (W = SemanticSlamOptions::loopClosureBranchWindow); then the branch with the lowest
 // BranchScore (−2 ln of its evidence, BranchScore.h) is kept and the others dropped; a split still open at the end
-// of the log is closed by finish(). At most one split is open at a time: an anchoring step during an open split is
-// decided by each branch's front end, as without branches. So a run costs at most twice a single run over the
-// steps a split is open (three times with branch C), and a run with no anchoring step (or W = 0) is step for step
-// the single run.
+// of the log is closed by finish().
+//
+// Splits within splits (SemanticSlamOptions::loopClosureOpenSplits, S; 1 by default). The open branches are the
+// leaves of a tree: each leaf is a run with its lineage, the branch it took at every open split above it. At most
+// S splits are open at a time, a budget shared by the whole tree: the leaves take each step in pre-order, and while
+// fewer than S splits are open a leaf whose step anchors splits as above (where several leaves anchor at one step,
+// the first in pre-order, the one nearest the closures as the front end made them, takes the last free split);
+// once S are open, an anchoring step is decided by each leaf's front end, as without branches. A split closes W
+// steps after it opened: each of its branches scores as the lowest-scoring leaf below it, the lowest is kept, the
+// leaves below the others are dropped with the splits open among them. A run costs at most 1 + S (1 + 2S with
+// branch C) times a single run over the steps splits are open; with S = 1, twice (three times). A run with no
+// anchoring step (or W = 0) is step for step the single run. (A budget per branch instead, each leaf under at most
+// S open splits, was measured too: the same gain for more cost, docs/association-front-end.md §10.)
 //
 // Where branches apply: a joint assignment whose pairings can anchor (BirthRule::Unassigned; not `known`) and
 // factors that are the data's likelihood under one association, which BranchScore integrates: ml's single
@@ -27,12 +36,14 @@
 // branches have no comparable evidence. There the window defaults to kDefaultWindow; elsewhere to none, and an
 // explicit window is refused.
 //
-// Invariants: main_ is branch A while a split is open and the kept branch otherwise; alternative_ is branch B
-// exactly while a split is open, nextBest_ branch C while a split that opened it is open; all have processed the
-// same steps whenever no step is begun.
+// Invariants: leaves_ is never empty and in the tree's pre-order (a split's branches follow the leaf it split
+// from), so leaves_.front() took branch A at every open split above it (the kept run when none is open); open_
+// holds the at most S open splits in order of opening (which is the order they close in), each named in the
+// lineage of at least one leaf; all leaves have processed the same steps whenever no step is begun.
 
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "semslam/slam/SemanticSlam.h"
@@ -72,7 +83,11 @@ class LoopClosureBranches {
   /// MRCLAM; equal on the other logs). Throws as window() does.
   static bool nextBest(const SemanticSlamOptions& options);
 
-  /// Throws as window() does.
+  /// SemanticSlamOptions::loopClosureOpenSplits, checked: ≥ 1, and 1 without branches. Throws
+  /// std::invalid_argument otherwise, and as window() does.
+  static int maximumOpenSplits(const SemanticSlamOptions& options);
+
+  /// Throws as window() and maximumOpenSplits() do.
   LoopClosureBranches(const LogHeader& header, SemanticSlamOptions options);
 
   /// Processes the next step in every open branch, splitting or closing as above.
@@ -80,19 +95,36 @@ class LoopClosureBranches {
   /// Closes an open split, then ends the kept run (SemanticSlam::finish). Call once, after the last step.
   void finish();
 
-  /// The kept run (while a split is open: branch A).
-  const SemanticSlam& slam() const { return *main_; }
-  /// Every split so far, in order.
+  /// The kept run (while splits are open: the leaf that took branch A at each).
+  const SemanticSlam& slam() const { return *leaves_.front().run; }
+  /// Every closed split of the kept run's lineage, in order of opening (a split dropped with its branch is not
+  /// listed).
   const std::vector<Split>& splits() const { return splits_; }
+  /// The open branches (leaves of the tree of open splits); 1 when none is open.
+  std::size_t openBranches() const { return leaves_.size(); }
 
  private:
-  void closeSplit();
+  /// One open branch: its run and, for each open split above it, that split's id and the branch it took there.
+  struct Leaf {
+    std::unique_ptr<SemanticSlam> run;
+    std::vector<std::pair<int, Branch>> lineage;
+  };
+  struct OpenSplit {
+    int id = 0;
+    Split split;
+  };
+  /// Begins the step in `leaf`, splits it where its step anchors and a split may open, completes it in every
+  /// branch. New leaves are inserted after it; returns how many.
+  std::size_t advance(std::size_t leaf, const TimeStep& step);
+  /// Closes the oldest open split: scores its branches by their leaves, keeps the lowest.
+  void closeOldestSplit();
 
   int window_;
   bool nextBestBranch_;
-  std::unique_ptr<SemanticSlam> main_;
-  std::unique_ptr<SemanticSlam> alternative_;
-  std::unique_ptr<SemanticSlam> nextBest_;
+  int maximumOpenSplits_;
+  int nextSplitId_ = 0;
+  std::vector<Leaf> leaves_;
+  std::vector<OpenSplit> open_;
   std::vector<Split> splits_;
 };
 

@@ -131,6 +131,10 @@ struct SemanticSlamOptions {
   /// (SemanticSlam::pairElsewhere). Unset: on for mm-nh wherever it has branches, off elsewhere
   /// (LoopClosureBranches::nextBest).
   std::optional<bool> loopClosureNextBest;
+  /// §10: how many loop-closure splits may be open at a time: above 1, a branch of an open split may split again
+  /// (LoopClosureBranches.h); 1: one split at a time, an anchoring step during an open split decided as without
+  /// branches.
+  int loopClosureOpenSplits = 1;
 };
 
 /// What became of one detection.
