@@ -109,10 +109,12 @@ TEST(KnownTrajectoryCeiling, AMethodOnThePinnedLogKeepsTheKnownAssociationTrajec
   EXPECT_EQ(ceiling.evaluation.metrics.method, ceiling.result.method);
   // Pinned at σ = 1e-4 per step beside detections of σ ≈ 0.1: the poses move by well under a millimetre.
   EXPECT_LT(largestDifference(ceiling.result.poses, reference.result.poses), 1e-3);
-  // The method's own options that `known` refuses (branches, switch rounds) go to the method, not the reference.
+  // The method's own options that `known` refuses (branches, open splits, switch rounds) go to the method, not the
+  // reference.
   MethodOptions branched = options;
   branched.slam.loopClosureBranchWindow = 8;
   branched.slam.loopClosureNextBest = true;
+  branched.slam.loopClosureOpenSplits = 2;
   branched.switchRounds = 2;
   EXPECT_EQ(runOnKnownTrajectory(log, branched, 0.0, 1).result.method, "mm-nh@known-trajectory");
   branched.slam.loopClosureBranchWindow = 0;  // the method's refusals still hold
