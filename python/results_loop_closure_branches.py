@@ -23,6 +23,8 @@ LABEL_SEEDS = [1, 2, 3]
 TRACKING_SEQUENCES = range(11)
 SIMULATION_SEEDS = range(1, 9)
 TRAJECTORIES = ["00", "07"]
+NO_LOGS = ("None of MRCLAM, KITTI tracking, Lost in the Woods or the KITTI odometry poses is present: section "
+           "skipped.")
 
 
 def branch_logs(semslam, data, scratch):
@@ -100,6 +102,21 @@ def run_variants(semslam, families, scratch, variants):
     return {(family, name, key): folder for family, name, key, folder, _ in jobs}
 
 
+def compare_variants(semslam, data, scratch, variants, suffix, extra_families=None):
+    """The window sweep's logs (and `extra_families(semslam, data, scratch)`'s) converted into `scratch`, and `mm-nh`
+    run on each in every variant, [(label, extra run arguments)], keyed by its index (run folders named
+    `suffix` + index): (families, {(family, name, index or "known"): run folder}), or None where no log is
+    present."""
+    os.makedirs(scratch, exist_ok=True)
+    families = branch_logs(semslam, data, scratch)
+    if extra_families:
+        families.update(extra_families(semslam, data, scratch))
+    if not families:
+        return None
+    variants = [(index, f"{suffix}{index}", arguments) for index, (_, arguments) in enumerate(variants)]
+    return families, run_variants(semslam, families, scratch, variants)
+
+
 def run_sweep(semslam, families, scratch, windows=WINDOWS):
     """Runs `mm-nh` with every window on every log (and `known` on the simulations); returns {(family, name, window
     or "known"): run folder}."""
@@ -174,8 +191,7 @@ def loop_closure_branches_section(semslam, data, scratch, shown, python):
     lines = ["## Two branches at an ambiguous loop closure: the window swept (issue 10)", ""]
     families = branch_logs(semslam, data, scratch)
     if not families:
-        return lines + ["None of MRCLAM, KITTI tracking, Lost in the Woods or the KITTI odometry poses is present: "
-                        "section skipped.", ""]
+        return lines + [NO_LOGS, ""]
     folders = run_sweep(semslam, families, scratch)
     lines += ["`mm-nh` with `--loop-closure-branches W` (W = 0: no branches; W = 16: the default). MRCLAM: mean "
               "`da_accuracy_real` over robots 1-5 × label seeds 1-3; KITTI tracking: mean `da_accuracy_real` / mean "

@@ -10,7 +10,7 @@ import concurrent.futures
 import os
 
 from results_commands import read_metrics, run_checked
-from results_loop_closure_branches import ROBOTS, branch_logs, family_figure, run_variants
+from results_loop_closure_branches import NO_LOGS, ROBOTS, compare_variants, family_figure
 
 VARIANTS = [("two branches", ["--no-loop-closure-next-best"]), ("with the third branch (the default)", [])]
 EXTRA_MRCLAM = [("MRCLAM, 2 classes", ["--classes", "2", "--misclassification", "0.1"]),
@@ -82,15 +82,11 @@ def comparison_table(families, folders, variants=VARIANTS, times_header="two / t
 
 def loop_closure_next_best_section(semslam, data, scratch, shown):
     lines = ["## The third branch at an ambiguous loop closure: the next-best landmarks (issue 10)", ""]
-    scratch = os.path.join(scratch, "loop-closure-next-best")
-    os.makedirs(scratch, exist_ok=True)
-    families = branch_logs(semslam, data, scratch)
-    families.update(extra_mrclam_logs(semslam, data, scratch))
-    if not families:
-        return lines + ["None of MRCLAM, KITTI tracking, Lost in the Woods or the KITTI odometry poses is present: "
-                        "section skipped.", ""]
-    folders = run_variants(semslam, families, scratch,
-                           [(index, f"v{index}", arguments) for index, (_, arguments) in enumerate(VARIANTS)])
+    runs = compare_variants(semslam, data, os.path.join(scratch, "loop-closure-next-best"), VARIANTS, "v",
+                            extra_mrclam_logs)
+    if runs is None:
+        return lines + [NO_LOGS, ""]
+    families, folders = runs
     lines += ["`mm-nh` with its defaults (W = 16 and a third branch in which the anchoring detections take their "
               "next-best landmarks; docs/association-front-end.md §10) and with `--no-loop-closure-next-best` (two "
               "branches). "

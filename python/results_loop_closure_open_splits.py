@@ -8,7 +8,7 @@ from the runs' metrics.json and branches.csv. Used by make_results.py.
 import os
 
 from results_commands import read_metrics
-from results_loop_closure_branches import branch_logs, run_variants
+from results_loop_closure_branches import NO_LOGS, compare_variants
 from results_loop_closure_next_best import comparison_table, kept_counts
 
 VARIANTS = [("one split at a time (the default)", []), ("two open splits", ["--loop-closure-open-splits", "2"])]
@@ -36,22 +36,18 @@ def simulation_ate_rows(families, folders):
 
 def loop_closure_open_splits_section(semslam, data, scratch, shown):
     lines = ["## Splits within splits at ambiguous loop closures (issue 10)", ""]
-    scratch = os.path.join(scratch, "loop-closure-open-splits")
-    os.makedirs(scratch, exist_ok=True)
-    families = branch_logs(semslam, data, scratch)
-    if not families:
-        return lines + ["None of MRCLAM, KITTI tracking, Lost in the Woods or the KITTI odometry poses is present: "
-                        "section skipped.", ""]
-    folders = run_variants(semslam, families, scratch,
-                           [(index, f"o{index}", arguments) for index, (_, arguments) in enumerate(VARIANTS)])
+    runs = compare_variants(semslam, data, os.path.join(scratch, "loop-closure-open-splits"), VARIANTS, "o")
+    if runs is None:
+        return lines + [NO_LOGS, ""]
+    families, folders = runs
     lines += ["`mm-nh` with its defaults (W = 16, three branches, one split open at a time) and with "
               "`--loop-closure-open-splits 2` (a branch of an open split may split again; "
               "docs/association-front-end.md §10). MRCLAM: mean `da_accuracy_real` (robots 1-5 × label seeds 1-3); "
               "KITTI tracking: mean `da_accuracy_real` / mean `clutter_rejected_moving` over 0000-0010; Lost in the "
               "Woods: `da_accuracy_real` / ATE [m]; KITTI 00 and 07: seeds within 2 × `known` association's ATE on "
-              "the same log, mean ATE [m]. *up / down*: logs where two open splits do better / worse (`da_accuracy_real`; "
-              "ATE for the simulations). *time*: the sum of the runs' `time_s`, on a machine shared with the other "
-              "runs of the section.", ""]
+              "the same log, mean ATE [m]. *up / down*: logs where two open splits do better / worse "
+              "(`da_accuracy_real`; ATE for the simulations). *time*: the sum of the runs' `time_s`, on a machine "
+              "shared with the other runs of the section.", ""]
     lines += comparison_table(families, folders, VARIANTS, times_header="one / two open",
                               counts_header="splits listed (one / two open)", counts=listed_splits)
     lines += simulation_ate_rows(families, folders)

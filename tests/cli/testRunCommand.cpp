@@ -219,9 +219,9 @@ TEST(RunCommand, LoopClosureBranchesAreListedInBranchesCsv) {
   // scores −127.97 for C against −127.63 for A): each row's kept branch is the one of the lowest score among those
   // opened; asking for it explicitly gives the same file, turning it off leaves its column empty.
   const fs::path noisyLog = dir / "noisy.jsonl";
-  ASSERT_EQ(runSemslam("simulate semantic --steps 60 --seed 14 --odom-noise-scale 3 --out \"" + noisyLog.string() + "\"")
-                .exitCode,
-            0);
+  const std::string simulateNoisy =
+      "simulate semantic --steps 60 --seed 14 --odom-noise-scale 3 --out \"" + noisyLog.string() + "\"";
+  ASSERT_EQ(runSemslam(simulateNoisy).exitCode, 0);
   const auto branchRows = [](const fs::path& folder) {
     std::ifstream file(folder / "branches.csv");
     std::vector<BranchRow> rows;

@@ -4,35 +4,17 @@ better, lower ATE for the simulations, undefined figures left out), and the tabl
 
 Usage: test_results_loop_closure_next_best.py
 """
-import json
 import os
 import sys
-import tempfile
 import unittest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import results_loop_closure_next_best as section  # noqa: E402
+from run_folder_case import RunFolderCase  # noqa: E402
 
-HEADER = "opened_at,closed_after,score_as_is,score_apart,score_next_best,kept\n"
 
-
-class LoopClosureNextBestSection(unittest.TestCase):
-    def setUp(self):
-        self.scratch = tempfile.TemporaryDirectory()
-
-    def tearDown(self):
-        self.scratch.cleanup()
-
-    def folder(self, name, metrics, branches=None):
-        path = os.path.join(self.scratch.name, name)
-        os.makedirs(path)
-        with open(os.path.join(path, "metrics.json"), "w") as f:
-            json.dump(dict({"time_s": 1.0}, **metrics), f)
-        if branches is not None:
-            with open(os.path.join(path, "branches.csv"), "w") as f:
-                f.write(HEADER + "".join(row + "\n" for row in branches))
-        return path
-
+class LoopClosureNextBestSection(RunFolderCase):
     def test_kept_counts_read_branches_csv(self):
         folder = self.folder("a", {}, ["3,19,10.5,12.0,,as-is", "30,46,10.0,9.0,8.5,next-best",
                                        "60,76,10.0,9.0,9.5,apart"])

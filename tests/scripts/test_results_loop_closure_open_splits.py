@@ -1,37 +1,26 @@
 """python/results_loop_closure_open_splits.py (docs/results.md section loop-closure-open-splits) on hand-made run
-folders (no data, no runs): the listed splits per variant, the table's row per family, and the simulations' ATE per
-seed beside `known` association's.
+folders (no data, no runs): the section skipped without logs, the listed splits per variant, the table's row per
+family, and the simulations' ATE per seed beside `known` association's.
 
 Usage: test_results_loop_closure_open_splits.py
 """
-import json
 import os
 import sys
-import tempfile
 import unittest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import results_loop_closure_open_splits as section  # noqa: E402
+from run_folder_case import RunFolderCase  # noqa: E402
 
-HEADER = "opened_at,closed_after,score_as_is,score_apart,score_next_best,kept\n"
 
-
-class LoopClosureOpenSplitsSection(unittest.TestCase):
-    def setUp(self):
-        self.scratch = tempfile.TemporaryDirectory()
-
-    def tearDown(self):
-        self.scratch.cleanup()
-
-    def folder(self, name, metrics, branches=None):
-        path = os.path.join(self.scratch.name, name)
-        os.makedirs(path)
-        with open(os.path.join(path, "metrics.json"), "w") as f:
-            json.dump(dict({"time_s": 1.0}, **metrics), f)
-        if branches is not None:
-            with open(os.path.join(path, "branches.csv"), "w") as f:
-                f.write(HEADER + "".join(row + "\n" for row in branches))
-        return path
+class LoopClosureOpenSplitsSection(RunFolderCase):
+    def test_without_logs_the_section_says_it_is_skipped(self):
+        empty = os.path.join(self.scratch.name, "no-data")
+        os.makedirs(empty)
+        lines = section.loop_closure_open_splits_section("semslam", empty, self.scratch.name, " ".join)
+        self.assertEqual(lines[0], "## Splits within splits at ambiguous loop closures (issue 10)")
+        self.assertIn(section.NO_LOGS, lines)
 
     def test_listed_splits_per_variant(self):
         one = [self.folder("a0", {}, ["3,19,1.0,2.0,,as-is"]), self.folder("b0", {})]
