@@ -64,7 +64,8 @@ LoopClosureBranches::LoopClosureBranches(const LogHeader& header, SemanticSlamOp
 
 void LoopClosureBranches::addStep(const TimeStep& step) {
   for (std::size_t leaf = 0; leaf < leaves_.size();) leaf += 1 + advance(leaf, step);
-  while (!open_.empty() && slam().steps() - 1 - open_.front().split.openedAt >= window_) closeOldestSplit();
+  LeafScores scores;  // splits closing after the same step score each leaf once
+  while (!open_.empty() && slam().steps() - 1 - open_.front().split.openedAt >= window_) closeOldestSplit(scores);
 }
 
 std::size_t LoopClosureBranches::advance(std::size_t leaf, const TimeStep& step) {
@@ -100,7 +101,7 @@ std::size_t LoopClosureBranches::advance(std::size_t leaf, const TimeStep& step)
   return added;
 }
 
-void LoopClosureBranches::closeOldestSplit() {
+void LoopClosureBranches::closeOldestSplit(LeafScores& scoreOf) {
   const int id = open_.front().id;
   Split split = open_.front().split;
   open_.erase(open_.begin());
@@ -112,17 +113,19 @@ void LoopClosureBranches::closeOldestSplit() {
     }
     return std::optional<Branch>();
   };
-  std::optional<double> scores[3];
+  std::optional<double> branchScores[3];
   for (const Leaf& leaf : leaves_) {
     const std::optional<Branch> branch = branchOf(leaf);
     if (!branch) continue;
-    std::optional<double>& score = scores[static_cast<int>(*branch)];
-    const double leafScore = branchScore(*leaf.run);
+    std::optional<double>& score = branchScores[static_cast<int>(*branch)];
+    const auto [cached, isNew] = scoreOf.try_emplace(leaf.run.get(), 0.0);
+    if (isNew) cached->second = branchScore(*leaf.run);
+    const double leafScore = cached->second;
     if (!score || leafScore < *score) score = leafScore;
   }
-  split.scoreA = scores[static_cast<int>(Branch::AsIs)].value();
-  split.scoreB = scores[static_cast<int>(Branch::Apart)].value();
-  split.scoreC = scores[static_cast<int>(Branch::NextBest)];
+  split.scoreA = branchScores[static_cast<int>(Branch::AsIs)].value();
+  split.scoreB = branchScores[static_cast<int>(Branch::Apart)].value();
+  split.scoreC = branchScores[static_cast<int>(Branch::NextBest)];
   // The lowest score; on a tie the earlier branch (A before B before C).
   double best = split.scoreA;
   if (split.scoreB < best) {
@@ -149,7 +152,8 @@ void LoopClosureBranches::closeOldestSplit() {
 }
 
 void LoopClosureBranches::finish() {
-  while (!open_.empty()) closeOldestSplit();
+  LeafScores scores;
+  while (!open_.empty()) closeOldestSplit(scores);
   if (leaves_.size() != 1) throw std::logic_error("LoopClosureBranches: more than one branch after every split closed");
   leaves_.front().run->finish();
 }

@@ -41,6 +41,7 @@
 // holds the at most S open splits in order of opening (which is the order they close in), each named in the
 // lineage of at least one leaf; all leaves have processed the same steps whenever no step is begun.
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -116,8 +117,11 @@ class LoopClosureBranches {
   /// Begins the step in `leaf`, splits it where its step anchors and a split may open, completes it in every
   /// branch. New leaves are inserted after it; returns how many.
   std::size_t advance(std::size_t leaf, const TimeStep& step);
-  /// Closes the oldest open split: scores its branches by their leaves, keeps the lowest.
-  void closeOldestSplit();
+  /// Each leaf's BranchScore, computed once for all the splits that close after one step (the leaves do not move
+  /// between them).
+  using LeafScores = std::map<const SemanticSlam*, double>;
+  /// Closes the oldest open split: scores its branches by their leaves (through `scoreOf`), keeps the lowest.
+  void closeOldestSplit(LeafScores& scoreOf);
 
   int window_;
   bool nextBestBranch_;
