@@ -85,12 +85,13 @@ void addSemanticSlamOptions(CLI::App* command, SemanticSlamOptions& options) {
       [&options](std::int64_t count) { options.loopClosureNextBest = count > 0; },
       "with --loop-closure-branches: a third branch in which the closing detections take their next-best landmarks "
       "(docs/association-front-end.md §10; default: on for mm-nh, off for ml and mm)");
-  command->add_option("--loop-closure-open-splits", options.loopClosureOpenSplits,
-                      "with --loop-closure-branches: how many splits may be open at a time, a branch of an open split "
-                      "splitting again where its step closes a loop (1: one split at a time; "
-                      "docs/association-front-end.md §10)")
-      ->check(CLI::Range(1, 8))
-      ->capture_default_str();
+  command
+      ->add_option_function<int>(
+          "--loop-closure-open-splits", [&options](int splits) { options.loopClosureOpenSplits = splits; },
+          "with --loop-closure-branches: how many splits may be open at a time, a branch of an open split "
+          "splitting again where its step closes a loop (1: one split at a time; docs/association-front-end.md §10; "
+          "default: " + std::to_string(LoopClosureBranches::kDefaultOpenSplits) + " where branches apply, 1 elsewhere)")
+      ->check(CLI::Range(1, 8));
   command->add_option("--anchoring-information", options.anchoringInformation,
                       "birth unassigned, with --loop-closure-branches: the information, ½ ln det(S R⁻¹) in nats, "
                       "above which a pairing closes a loop")

@@ -117,12 +117,13 @@ void expectEveryObjectOnALandmarkOfItsOwn(const SemanticSlam& slam) {
   EXPECT_EQ(distinct.size(), 5u);
 }
 
-/// The scenario under mm-nh with two branches (A and B; the third branch, mm-nh's default, is tested on its own
-/// scenario below).
+/// The scenario under mm-nh with two branches (A and B) and one split at a time (the third branch and splits within
+/// splits, mm-nh's defaults, are tested on their own below).
 LoopClosureBranches runScenario(int window, int steps, double travelSigma = 0.5) {
   const LookAlikes scenario(travelSigma);
   SemanticSlamOptions options = optionsWithWindow(window);
   options.loopClosureNextBest = false;
+  options.loopClosureOpenSplits = 1;
   LoopClosureBranches run(scenario.header, options);
   for (int k = 0; k < steps; ++k) run.addStep(scenario.step(k));
   run.finish();
@@ -165,7 +166,7 @@ TEST(LoopClosureBranches, ABranchOpenUntilTheTrueObjectIsReSeenKeepsTheLookAlike
 /// The third branch's scenario: ml (one landmark per detection, so a pairing stays as the step made it; under mm-nh
 /// the return's mixtures switch to A's and D's landmarks once F pins the pose).
 SemanticSlamOptions slipOptions(int window, bool nextBest) {
-  SemanticSlamOptions options = optionsWithWindow(window);
+  SemanticSlamOptions options = optionsWithWindow(window);  // splits open at a time: the default
   options.strategy = AssociationStrategy::MaximumLikelihood;
   options.loopClosureNextBest = nextBest;
   return options;
@@ -303,14 +304,16 @@ TEST(LoopClosureBranches, TheDefaultWindowIsOnWhereBranchesApplyAndOffElsewhere)
     options.loopClosureBranchWindow = 0;  // off is accepted everywhere
     EXPECT_EQ(LoopClosureBranches::window(options), 0);
   }
-  // With the default options, the scenario's loop closure opens a split (the test above keeps the look-alike apart
-  // with a window of 3 and two branches).
+  // With the default options, the scenario's loop closure opens a split, and branch B's re-sighting of A, D and F
+  // one step later a second one inside it (the test above keeps the look-alike apart with a window of 3, two
+  // branches and one split at a time).
   const LookAlikes scenario;
   LoopClosureBranches run(scenario.header, SemanticSlamOptions{});
   for (int k = 0; k < kSteps; ++k) run.addStep(scenario.step(k));
   run.finish();
-  ASSERT_EQ(run.splits().size(), 1u);
-  EXPECT_EQ(run.splits().front().openedAt, LookAlikes::kReturn);
+  ASSERT_EQ(run.splits().size(), 2u);
+  EXPECT_EQ(run.splits()[0].openedAt, LookAlikes::kReturn);
+  EXPECT_EQ(run.splits()[1].openedAt, LookAlikes::kReturn + 1);
 }
 
 TEST(LoopClosureBranches, TheNextBestBranchIsMmNhsDefaultWhereItHasBranches) {
@@ -362,6 +365,7 @@ TEST(LoopClosureBranches, WithTwoOpenSplitsABranchSplitsAgainAndEachSplitKeepsIt
   const LookAlikes scenario;
   SemanticSlamOptions options = optionsWithWindow(3);
   options.loopClosureNextBest = false;
+  options.loopClosureOpenSplits = 1;
   const TracedRun one = runTraced(scenario, options);
   options.loopClosureOpenSplits = 2;
   const TracedRun two = runTraced(scenario, options);
@@ -395,6 +399,7 @@ TEST(LoopClosureBranches, ASplitOpenOnlyInADroppedBranchIsDroppedWithIt) {
   scenario.lookAlikesMapped = true;
   scenario.slip = 0.8;
   SemanticSlamOptions options = slipOptions(3, true);
+  options.loopClosureOpenSplits = 1;
   const TracedRun one = runTraced(scenario, options);
   options.loopClosureOpenSplits = 2;
   const TracedRun two = runTraced(scenario, options);
@@ -407,9 +412,23 @@ TEST(LoopClosureBranches, ASplitOpenOnlyInADroppedBranchIsDroppedWithIt) {
   expectSameEstimate(two.run.slam().smoother().estimate(), one.run.slam().smoother().estimate());
 }
 
+TEST(LoopClosureBranches, TwoOpenSplitsAreTheDefaultWhereBranchesApply) {
+  for (SemanticSlamOptions options : everyStrategyAndBirthRule()) {
+    const bool branches = LoopClosureBranches::window(options) > 0;
+    EXPECT_EQ(LoopClosureBranches::maximumOpenSplits(options), branches ? LoopClosureBranches::kDefaultOpenSplits : 1)
+        << strategyName(options.strategy);
+    options.loopClosureOpenSplits = 1;
+    EXPECT_EQ(LoopClosureBranches::maximumOpenSplits(options), 1);
+    options.loopClosureBranchWindow = 0;  // no branches: one "split" at most, as asked or by default
+    options.loopClosureNextBest.reset();
+    EXPECT_EQ(LoopClosureBranches::maximumOpenSplits(options), 1);
+    options.loopClosureOpenSplits.reset();
+    EXPECT_EQ(LoopClosureBranches::maximumOpenSplits(options), 1);
+  }
+}
+
 TEST(LoopClosureBranches, OpenSplitsAreAtLeastOneAndMoreThanOneNeedBranches) {
   SemanticSlamOptions options;
-  EXPECT_EQ(LoopClosureBranches::maximumOpenSplits(options), 1);
   options.loopClosureOpenSplits = 0;
   EXPECT_THROW(LoopClosureBranches(LookAlikes().header, options), std::invalid_argument);
   options.loopClosureOpenSplits = 2;

@@ -67,7 +67,7 @@ MethodRun runOnKnownTrajectory(const MeasurementLog& log, const MethodOptions& o
   known.switchRounds = 0;
   known.slam.loopClosureBranchWindow.reset();
   known.slam.loopClosureNextBest.reset();
-  known.slam.loopClosureOpenSplits = 1;
+  known.slam.loopClosureOpenSplits.reset();
   known.poseCovariances = poseErrorScale > 0.0;
   known.runFolder = false;
   const MethodRun reference = runMethod(log, known);

@@ -48,9 +48,11 @@ bool LoopClosureBranches::nextBest(const SemanticSlamOptions& options) {
 }
 
 int LoopClosureBranches::maximumOpenSplits(const SemanticSlamOptions& options) {
-  const int maximum = options.loopClosureOpenSplits;
+  const bool branches = window(options) > 0;
+  if (!options.loopClosureOpenSplits) return branches ? kDefaultOpenSplits : 1;
+  const int maximum = *options.loopClosureOpenSplits;
   if (maximum < 1) throw std::invalid_argument("loop-closure open splits must be >= 1");
-  if (maximum > 1 && window(options) == 0) {
+  if (maximum > 1 && !branches) {
     throw std::invalid_argument("more than one open split (splits within splits) needs branches (a window > 0, the "
                                 "unassigned birth rule and ml, mm or mm-nh)");
   }

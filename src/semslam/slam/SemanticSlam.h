@@ -133,8 +133,8 @@ struct SemanticSlamOptions {
   std::optional<bool> loopClosureNextBest;
   /// §10: how many loop-closure splits may be open at a time: above 1, a branch of an open split may split again
   /// (LoopClosureBranches.h); 1: one split at a time, an anchoring step during an open split decided as without
-  /// branches.
-  int loopClosureOpenSplits = 1;
+  /// branches. Unset: LoopClosureBranches::kDefaultOpenSplits where branches apply, 1 elsewhere.
+  std::optional<int> loopClosureOpenSplits;
 };
 
 /// What became of one detection.
