@@ -110,3 +110,22 @@ TEST(Optimizer, IsDeterministic) {
     }
   }
 }
+
+TEST(Optimizer, AChi2DecreaseToleranceStopsWithinItOfTheOptimum) {
+  // Rule 2's absolute form: Gauss-Newton converges quadratically near the optimum, so once a step lowers chi2 by
+  // less than the tolerance, what is left is far below it; the run needs fewer steps than the 1e-10 relative rule.
+  const test::Problem problem = test::planarSlamProblem(20, 6, 9);
+  const OptimizationResult reference = optimize(problem.graph, problem.initial);
+  ASSERT_TRUE(reference.converged) << reference.stopReason;
+  OptimizerParams params;
+  params.chi2DecreaseTolerance = 1e-3;
+  const OptimizationResult coarse = optimize(problem.graph, problem.initial, params);
+  EXPECT_TRUE(coarse.converged);
+  EXPECT_EQ(coarse.stopReason, "decrease of chi2 below its absolute tolerance");
+  EXPECT_LT(coarse.iterations, reference.iterations);
+  EXPECT_GE(coarse.finalChi2, reference.finalChi2 - 1e-9 * reference.finalChi2);
+  EXPECT_LE(coarse.finalChi2, reference.finalChi2 + params.chi2DecreaseTolerance);
+  // Off (0, the default) it changes nothing.
+  params.chi2DecreaseTolerance = 0.0;
+  EXPECT_EQ(optimize(problem.graph, problem.initial, params).finalChi2, reference.finalChi2);
+}

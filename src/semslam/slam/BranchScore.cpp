@@ -4,11 +4,11 @@
 #include <cmath>
 #include <limits>
 #include <map>
-#include <memory>
 #include <set>
 
 #include "semslam/factors/MaxMixtureFactor.h"
 #include "semslam/solve/LaplaceEvidence.h"
+#include "semslam/solve/Optimizer.h"
 
 namespace semslam {
 namespace {
@@ -43,14 +43,15 @@ double labelScore(const SemanticSlam& run, const Values& estimate) {
 }  // namespace
 
 double branchScore(const SemanticSlam& run) {
-  std::unique_ptr<Smoother> converged = run.smoother().fork();
-  converged->converge();
-  const Values& estimate = converged->estimate();
+  const FactorGraph factors = run.smoother().factors();
+  OptimizerParams params;
+  params.chi2DecreaseTolerance = kBranchScoreTolerance;
+  const Values estimate = optimize(factors, run.smoother().estimate(), params).values;
 
   std::set<const Factor*> placeholders;
   for (FactorIndex index : run.weakPriors()) placeholders.insert(run.smoother().factor(index).get());
   FactorGraph model;
-  for (const FactorPtr& factor : converged->factors()) {
+  for (const FactorPtr& factor : factors) {
     if (placeholders.contains(factor.get())) continue;
     if (const auto* mixture = dynamic_cast<const MaxMixtureFactor*>(factor.get())) {
       model.add(mixture->components()[static_cast<std::size_t>(mixture->activeComponent(estimate))].factor);

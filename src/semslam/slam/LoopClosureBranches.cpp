@@ -128,13 +128,15 @@ void LoopClosureBranches::closeOldestSplit(LeafScores& scoreOf) {
   split.scoreA = branchScores[static_cast<int>(Branch::AsIs)].value();
   split.scoreB = branchScores[static_cast<int>(Branch::Apart)].value();
   split.scoreC = branchScores[static_cast<int>(Branch::NextBest)];
-  // The lowest score; on a tie the earlier branch (A before B before C).
+  // The lowest score; scores within the precision they are converged to (kBranchScoreTolerance) are a tie, kept
+  // for the earlier branch (A before B before C): the closure as made unless a branch explains the log better
+  // (§10, "The score's precision, and ties").
   double best = split.scoreA;
-  if (split.scoreB < best) {
+  if (split.scoreB < best - kBranchScoreTolerance) {
     best = split.scoreB;
     split.kept = Branch::Apart;
   }
-  if (split.scoreC && *split.scoreC < best) split.kept = Branch::NextBest;
+  if (split.scoreC && *split.scoreC < best - kBranchScoreTolerance) split.kept = Branch::NextBest;
   // Drop the leaves below the other branches, and the splits open only among them.
   std::vector<Leaf> kept;
   for (Leaf& leaf : leaves_) {

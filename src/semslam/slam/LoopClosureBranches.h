@@ -15,8 +15,9 @@
 //             ones (SemanticSlam::pairElsewhere): the other look-alike; opened only where some detection then has
 //             one.
 // All take steps k+1 … k+W (W = SemanticSlamOptions::loopClosureBranchWindow); then the branch with the lowest
-// BranchScore (−2 ln of its evidence, BranchScore.h) is kept and the others dropped; a split still open at the end
-// of the log is closed by finish().
+// BranchScore (−2 ln of its evidence, BranchScore.h) is kept and the others dropped, scores within
+// kBranchScoreTolerance (the precision they are converged to) being a tie kept for the earlier branch, A before B
+// before C; a split still open at the end of the log is closed by finish().
 //
 // Splits within splits (SemanticSlamOptions::loopClosureOpenSplits, S; kDefaultOpenSplits where branches apply). The
 // open branches are the leaves of a tree: each leaf is a run with its lineage, the branch it took at every open split

@@ -14,6 +14,7 @@
 #include "semslam/models/HypothesisComponent.h"
 #include "semslam/models/ValueConversions.h"
 #include "semslam/solve/HungarianAssignment.h"
+#include "semslam/solve/Optimizer.h"
 
 namespace semslam {
 namespace {
@@ -369,7 +370,7 @@ bool SemanticSlam::escapeNullBasins(int k) {
   seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
   nullsTried_.resize(static_cast<std::size_t>(landmarks()), 0);
   bool escaped = false;
-  std::optional<double> unchangedCost;  // Σ chi2 of the unchanged graph converged: the same until a try is accepted
+  std::optional<double> unchangedCost;  // Σ chi2 of the graph in force, converged; after a kept try, the try's
   for (int j : seen) {
     const std::vector<std::size_t> onNull = assignedRecordsOnNull(j);
     std::size_t& tried = nullsTried_[static_cast<std::size_t>(j)];
@@ -383,11 +384,7 @@ bool SemanticSlam::escapeNullBasins(int k) {
     tried = onNull.size();
     // The unchanged graph, converged, against the trial: the same factors, the null detections first held on the
     // landmark, then given their mixtures back at the estimate that pulled (step 7 of the class comment).
-    if (!unchangedCost) {
-      std::unique_ptr<Smoother> unchanged = smoother_->fork();
-      unchanged->converge();
-      unchangedCost = unchanged->factors().chi2(unchanged->estimate());
-    }
+    if (!unchangedCost) unchangedCost = optimize(smoother_->factors(), smoother_->estimate()).finalChi2;
     std::unique_ptr<Smoother> trial = smoother_->fork();
     for (std::size_t r : onNull) {
       const DetectionRecord& record = records_[r];
@@ -399,9 +396,10 @@ bool SemanticSlam::escapeNullBasins(int k) {
     for (std::size_t r : onNull) trial->replaceFactor(records_[r].factors[0], records_[r].mixture);
     trial->update();
     trial->converge();
-    if (trial->factors().chi2(trial->estimate()) < *unchangedCost) {
+    const double trialCost = trial->factors().chi2(trial->estimate());
+    if (trialCost <= *unchangedCost + kEscapeTolerance) {  // lower, or the same optimum: kept (§6b)
       smoother_ = std::move(trial);
-      unchangedCost.reset();
+      unchangedCost = trialCost;
       tried = 0;
       escaped = true;
     }

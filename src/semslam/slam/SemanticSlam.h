@@ -47,9 +47,12 @@
 //      at least two (one is what the null hypothesis is for), are tried on the landmark together in a fork of the
 //      smoother (their plain factors, converge, the mixtures back, converge); the fork replaces the smoother when
 //      the graph's cost there, the max-mixture objective F = ½ Σ chi2 with every mixture at its own choice, is
-//      below the cost of the unchanged graph converged alike. Each acceptance lowers F: the escape only ever moves
-//      the estimate to a better optimum of paper B's own objective, out of the basin where a drifted estimate has
-//      put a landmark's re-sightings beyond the null hypothesis's break-even and nothing pulls it back.
+//      not above the cost of the unchanged graph converged alike (within kEscapeTolerance, the roundoff band of
+//      two converged costs: a trial that converges back to the same optimum is a tie, kept, and the landmark may
+//      be tried again; §6b, "Ties, kept on purpose"). Each acceptance lowers F or leaves it where it was,
+//      converged: the escape only ever moves the estimate to a better optimum of paper B's own objective, out of
+//      the basin where a drifted estimate has put a landmark's re-sightings beyond the null hypothesis's
+//      break-even and nothing pulls it back.
 //      With nullEscapeWindow T > 0 (§6c), a single detection on null is tried as well when the landmark had a
 //      detection off null at most T seconds before it: within a tracked object's stream of sightings, one on null
 //      says the estimate lags, as two do; after a long gap a lone detection stays what the null hypothesis is for.
@@ -306,6 +309,10 @@ class SemanticSlam {
   bool repairExclusion(std::size_t first, std::size_t end);
   /// Step 7 of the class comment, for the landmarks seen at step k. Returns whether the smoother was replaced.
   bool escapeNullBasins(int k);
+  /// Two converged costs of the escape (chi2, units of −2 ln) closer than this are the same optimum reached twice:
+  /// Gauss-Newton's 1e-10 relative stop leaves each within ~1e-10 · chi2 of it (chi2 runs to 1e4-1e5 on the real
+  /// logs, the ties seen are 3e-11 to 3e-10 apart), while a different optimum differs by units (§6b).
+  static constexpr double kEscapeTolerance = 1e-3;
   /// The records on `landmark` that the front end assigned to it and whose mixture is on its null component.
   std::vector<std::size_t> assignedRecordsOnNull(int landmark) const;
   /// Whether the record's mixture is in force and on its null component at the estimate.

@@ -28,6 +28,9 @@ bool convergedAfterStep(const OptimizerParams& params, double oldChi2, double ne
   if (oldChi2 - newChi2 <= params.relativeDecreaseTolerance * oldChi2) {
     result.stopReason = "relative decrease of chi2 below tolerance";
     result.converged = true;
+  } else if (params.chi2DecreaseTolerance > 0.0 && oldChi2 - newChi2 <= params.chi2DecreaseTolerance) {
+    result.stopReason = "decrease of chi2 below its absolute tolerance";
+    result.converged = true;
   } else if (maxNorm(step) <= params.stepTolerance) {
     result.stopReason = "step below tolerance";
     result.converged = true;

@@ -10,7 +10,9 @@
 //
 // Stopping rules (checked in this order after each accepted step; the result is the last accepted point):
 //   1. gradient:  ‖g‖∞ ≤ gradientTolerance · ‖g₀‖∞ (g₀ at the initial values), or ‖g‖∞ = 0;
-//   2. decrease:  (F_old − F_new) ≤ relativeDecreaseTolerance · F_old;
+//   2. decrease:  (F_old − F_new) ≤ relativeDecreaseTolerance · F_old, or, when chi2DecreaseTolerance > 0,
+//                 chi2_old − chi2_new ≤ chi2DecreaseTolerance (an absolute bound, for a caller that needs chi2 only
+//                 to a known precision: the loop-closure branch score, slam/BranchScore.h);
 //   3. small step: ‖δ‖∞ ≤ stepTolerance;
 //   4. maxIterations linear solves;
 //   Gauss-Newton also stops (keeping the previous point) if a step increases F: it has no way to recover, use
@@ -29,6 +31,7 @@ struct OptimizerParams {
   SolverType solver = SolverType::GaussNewton;
   int maxIterations = 100;
   double relativeDecreaseTolerance = 1e-10;
+  double chi2DecreaseTolerance = 0.0;  // absolute, in units of chi2; 0 turns the absolute rule off
   double gradientTolerance = 1e-10;
   double stepTolerance = 1e-12;
   double initialLambda = 1e-5;
