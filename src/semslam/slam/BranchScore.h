@@ -29,8 +29,8 @@ namespace semslam {
 /// The precision of a score, in units of −2 ln: X̂ is Gauss-Newton's from the run's estimate, stopped once a step
 /// lowers chi2 by less than this (Optimizer.h, rule 2 in absolute terms); near the optimum Gauss-Newton converges
 /// quadratically, so the score is then within far less than this of its value at the exact optimum. Two scores
-/// closer than this are a tie (LoopClosureBranches keeps the earlier branch). It is 1e-3 of a quantity whose
-/// decisive gaps are units to hundreds (docs/association-front-end.md §10, "The score's precision, and ties").
+/// closer than this are a tie (LoopClosureBranches keeps the earlier branch). The score's decisive gaps are units to
+/// hundreds (docs/association-front-end.md §10, "The score's precision, and ties").
 inline constexpr double kBranchScoreTolerance = 1e-3;
 
 /// The score above of `run` at its estimate converged to kBranchScoreTolerance (the run is unchanged).

@@ -311,7 +311,7 @@ class SemanticSlam {
   bool escapeNullBasins(int k);
   /// Two converged costs of the escape (chi2, units of −2 ln) closer than this are the same optimum reached twice:
   /// Gauss-Newton's 1e-10 relative stop leaves each within ~1e-10 · chi2 of it (chi2 runs to 1e4-1e5 on the real
-  /// logs, the ties seen are 3e-11 to 3e-10 apart), while a different optimum differs by units (§6b).
+  /// logs, the ties seen are within 3e-11), while a different optimum differs by units (§6b).
   static constexpr double kEscapeTolerance = 1e-3;
   /// The records on `landmark` that the front end assigned to it and whose mixture is on its null component.
   std::vector<std::size_t> assignedRecordsOnNull(int landmark) const;
