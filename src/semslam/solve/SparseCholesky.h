@@ -7,6 +7,17 @@
 //
 // analyze() computes the ordering and the symbolic factor once per sparsity pattern; factorize() may then be
 // called for any matrix with that pattern (each Gauss-Newton or Levenberg-Marquardt iteration).
+//
+// Threads: every call runs on the calling thread only. Debian's CHOLMOD 3 (SuiteSparse 5) runs loops of its
+// supernodal factorization as OpenMP parallel regions with a team fixed at compile time (CHOLMOD_OMP_NUM_THREADS =
+// 4), whatever the machine has; on the 2-core machines of docs/results.md, with two runs side by side, that is 8
+// threads on 2 cores, and the wake-ups cost more than the loops save (with the regions serial, on an idle 2-core
+// machine: mm-nh on Starry Night 0.56 × the wall time, sphere2500's batch solve 0.79 ×, the same outputs byte for
+// byte; docs/benchmarks.md, "Threads"). semslam parallelises across runs instead (studies' jobs, MPI ranks), so each
+// call makes the OpenMP regions CHOLMOD starts serial: it sets the calling thread's max-active-levels to 0 in the
+// OpenMP runtime CHOLMOD was linked with, and restores it after. The setting is per thread (OpenMP 5.0's data
+// environment), so a host program's own OpenMP use on other threads is untouched; with a CHOLMOD built without
+// OpenMP there is nothing to set. The factor does not depend on the team size: those loops are independent updates.
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCore>
