@@ -22,15 +22,20 @@ KITTI_TRACKING_SEQUENCES = list(range(11))
 SPEED_TARGET = 20.0
 
 
+def bound(batch_ate):
+    """The issue's tolerance around the batch back end's ATE: max(10 % of it, 0.02 m)."""
+    return max(0.1 * batch_ate, 0.02)
+
+
 def within(incremental_ate, batch_ate):
     """The issue's bound: |incremental − batch| ≤ max(10 % of batch, 0.02 m)."""
-    return abs(incremental_ate - batch_ate) <= max(0.1 * batch_ate, 0.02)
+    return abs(incremental_ate - batch_ate) <= bound(batch_ate)
 
 
 def worse(incremental_ate, batch_ate):
-    """The incremental ATE above the batch one by more than the bound: the one side of `within` that the target is
-    there to prevent (both back ends are local, and outside the bound the incremental one is as often the better)."""
-    return incremental_ate - batch_ate > max(0.1 * batch_ate, 0.02)
+    """The incremental ATE above the batch one by more than the bound: the side of `within` that the target is there
+    to prevent (both back ends are local optimisers, and outside the bound the incremental one is often the better)."""
+    return incremental_ate - batch_ate > bound(batch_ate)
 
 
 def backend_rows(results):
