@@ -57,6 +57,21 @@ class Backends(unittest.TestCase):
         for line in lines:
             self.assertEqual(line.count("|"), lines[0].count("|"), line)
 
+    def test_the_switching_table_sets_mm_nhs_switching_run_against_the_same_batch_run(self):
+        results = {
+            ("A", "ml", "incremental"): metrics(1.0, 0.9, 0.5),
+            ("A", "ml", "batch"): metrics(1.05, 0.8, 25.0),
+            ("A", "mm-nh", "incremental"): metrics(2.0, 0.5, 1.0),
+            ("A", "mm-nh", section.SWITCHING): metrics(1.04, 0.7, 1.5),
+            ("A", "mm-nh", "batch"): metrics(1.0, 0.8, 5.0),
+        }
+        rows = section.backend_rows(section.switching_results(results))
+        self.assertEqual([(r["log"], r["method"]) for r in rows], [("A", "mm-nh")])
+        self.assertEqual(rows[0]["ate"], (1.04, 1.0))
+        self.assertEqual(rows[0]["da"], (0.7, 0.8))
+        self.assertTrue(rows[0]["within"])
+        self.assertEqual(section.RUN_OPTIONS[section.SWITCHING][-2:], ["--switch-rounds", "5"])
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -263,3 +263,72 @@ TEST(MixtureSwitching, AGraphWithoutMixturesIsSolvedBitForBitAsWithoutTheRule) {
   without.convergeAll();
   EXPECT_EQ(test::maxDifference(withRule.estimate(), without.estimate()), 0.0);
 }
+
+TEST(MixtureSwitching, ALandmarksOldMixturesAreCheckedAgainOnlyOnceItHasMoved) {
+  // A robot drives past one landmark and detects it at every step, each detection a mixture of the landmark and
+  // paper B's null hypothesis (the same factor, σ × 100, declared a widening). Every update moves the landmark a
+  // little; with the exact check (wildfireThreshold 0) each update compares every mixture the landmark has ever
+  // had, so the check grows with its history; with the default threshold, only the mixtures whose variables have
+  // moved by more than 1e-3 since they were last checked. Both keep the batch smoother's components, and the
+  // detection that lies 2 m off (the outlier) on the null hypothesis.
+  std::mt19937 rng(3);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  const Point2 landmark(20.0, 3.0);
+  FactorGraph first;
+  Values firstValues;
+  first.emplace<PriorFactor<SE2>>(poseKey(0), SE2(), NoiseModel::isotropic(3, 0.01));
+  firstValues.insert(poseKey(0), SE2());
+  firstValues.insert(kL0, Point2(landmark.x() + 0.3, landmark.y() - 0.2));  // its first sighting, off by 0.36 m
+  IncrementalSmootherParams exact = withSwitching();
+  exact.wildfireThreshold = 0.0;
+  BatchSmoother batch;
+  IncrementalSmoother thresholded(withSwitching());
+  IncrementalSmoother exactCheck(exact);
+  const std::initializer_list<Smoother*> smoothers = {&batch, &thresholded, &exactCheck};
+  const auto odometryNoise = NoiseModel::fromSigmas(Vector3(0.05, 0.05, 0.01));
+  const double sigma = 0.1, nullScale = 100.0;
+  std::vector<FactorIndex> mixtures;
+  SE2 truth;
+  long thresholdedChecks = 0, exactChecks = 0;
+  const int steps = 120, outlierStep = 60;
+  for (int k = 1; k <= steps; ++k) {
+    truth = truth * SE2(0.25, 0.0, 0.0);
+    const SE2 odometry =
+        SE2(0.25, 0.0, 0.0) * SE2::Exp(Vector3(0.02 * normal(rng), 0.02 * normal(rng), 0.005 * normal(rng)));
+    Point2 z = truth.transformTo(landmark) + Point2(sigma * normal(rng), sigma * normal(rng));
+    if (k == outlierStep) z += Point2(0.0, 2.0);
+    const auto detection = [&](double scale) {
+      return std::make_shared<const RelativePointFactor<SE2, Point2>>(poseKey(k), kL0, z,
+                                                                      NoiseModel::isotropic(2, sigma * scale));
+    };
+    FactorGraph step = k == 1 ? first : FactorGraph();
+    step.emplace<BetweenFactor<SE2>>(poseKey(k - 1), poseKey(k), odometry, odometryNoise);
+    step.add(std::make_shared<const MaxMixtureFactor>(std::vector<MaxMixtureFactor::Component>{
+        {detection(1.0), 0.9}, {detection(nullScale), 0.1, MaxMixtureFactor::Widening{0, nullScale}}}));
+    for (Smoother* smoother : smoothers) {
+      Values values = k == 1 ? firstValues : Values();
+      values.insert(poseKey(k), (k == 1 ? SE2() : smoother->estimate<SE2>(poseKey(k - 1))) * odometry);
+      mixtures.resize(k);
+      mixtures[k - 1] = smoother->update(step, values).back();
+    }
+    thresholdedChecks += thresholded.lastUpdate().checkedMixtures;
+    exactChecks += exactCheck.lastUpdate().checkedMixtures;
+  }
+  // The exact check compares every mixture at every update, about steps² / 2 in all and every one at the last
+  // update; the threshold, the mixtures of what moved (measured: 7,501 checks against 1,097 in all, 122 against 11
+  // at the last update).
+  EXPECT_GT(exactCheck.lastUpdate().checkedMixtures, steps);
+  EXPECT_GT(exactChecks, steps * steps / 2);
+  EXPECT_LT(thresholded.lastUpdate().checkedMixtures, steps / 4);
+  EXPECT_LT(thresholdedChecks * 5, exactChecks);
+  // The same components as the batch smoother, the outlier on the null hypothesis (component 1), the others on
+  // the landmark; estimates within the relinearization threshold of the batch one.
+  EXPECT_EQ(componentDisagreements(thresholded, batch, mixtures), 0);
+  EXPECT_EQ(componentDisagreements(exactCheck, batch, mixtures), 0);
+  for (int k = 1; k <= steps; ++k) {
+    EXPECT_EQ(mixtureAt(thresholded, mixtures[k - 1]).activeComponent(thresholded.estimate()), k == outlierStep)
+        << "step " << k;
+  }
+  EXPECT_LT(test::maxDifference(thresholded.estimate(), batch.estimate()),
+            IncrementalSmootherParams().relinearizeThreshold);
+}

@@ -70,6 +70,7 @@ int IncrementalSmoother::addVariable(Key key, const Value& value) {
   estimate_.insert(key, value);
   estimateSlots_.push_back(const_cast<Value*>(&estimate_.value(key)));  // std::map nodes never move
   delta_.resize(delta_.size() + variables_.back().dimension, 0.0);
+  deltaAtMixtureCheck_.resize(delta_.size(), 0.0);
   isStale_.push_back(0);
   isCandidate_.push_back(0);
   return id;
@@ -99,6 +100,8 @@ void IncrementalSmoother::relinearize(int variable) {
   thetaById_[variable] = retract(thetaById_[variable], delta);
   theta_.update(v.key, thetaById_[variable]);
   delta.setZero();
+  // Its factors are linearized afresh at θ_v, which is the estimate now: its mixtures choose there.
+  std::fill_n(deltaAtMixtureCheck_.begin() + v.offset, v.dimension, 0.0);
   for (int slot : v.factors) slots_[slot].linearization.reset();
 }
 
@@ -724,6 +727,7 @@ OptimizationResult IncrementalSmoother::convergeAll(const OptimizerParams& param
     std::fill(delta_.begin() + variable.offset, delta_.begin() + variable.offset + variable.dimension, 0.0);
     markStale(v);
   }
+  std::fill(deltaAtMixtureCheck_.begin(), deltaAtMixtureCheck_.end(), 0.0);
   for (Slot& slot : slots_) slot.linearization.reset();
   forceFull_ = true;
   try {
@@ -738,7 +742,7 @@ OptimizationResult IncrementalSmoother::convergeAll(const OptimizerParams& param
 
 std::size_t IncrementalSmoother::memoryBytes() const {
   std::size_t bytes = vectorBytes(variables_) + mapBytes(variableIds_) + theta_.memoryBytes() +
-                      vectorBytes(thetaById_) + vectorBytes(delta_) + vectorBytes(slots_) +
+                      vectorBytes(thetaById_) + vectorBytes(delta_) + vectorBytes(deltaAtMixtureCheck_) + vectorBytes(slots_) +
                       vectorBytes(pendingMarked_) + vectorBytes(pendingReplaced_) + vectorBytes(unsettledMixtures_) +
                       vectorBytes(cliques_) + vectorBytes(freeCliques_) + vectorBytes(roots_) +
                       vectorBytes(relinearizationCandidates_) + vectorBytes(isCandidate_) + estimate_.memoryBytes() +

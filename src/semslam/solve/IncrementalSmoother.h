@@ -38,16 +38,22 @@
 //   0. before the solve, a mixture entering the graph (new, or replacing a factor) with c_f(θ) ≠ c_f(θ ⊕ Δ) has
 //      its variables relinearized at the estimate (θ_v ← θ_v ⊕ Δ_v, Δ_v ← 0, fluid: every factor touching them
 //      re-linearized and re-eliminated): it chooses where the batch smoother's first iterate would;
-//   1. after the solve, every mixture the update touched (linearized in it, or one of whose variables' Δ changed)
-//      is checked: if its linearized component differs from c_f(θ ⊕ Δ) at the new estimate, its variables are
-//      relinearized there and steps 2–5 run again on what that marks;
+//   1. after the solve, every mixture the update touched is checked: linearized in it, or touching a variable v
+//      whose Δ_v has moved by more than wildfireThreshold (∞-norm) since v's mixtures were last checked (the
+//      partial state update's own measure of a negligible move; exact with a threshold of 0). If its linearized
+//      component differs from c_f(θ ⊕ Δ) at the new estimate, its variables are relinearized there and steps 2–5
+//      run again on what that marks;
 //   2. repeat 1 until no touched mixture switches, at most maxSwitchRounds extra solves
 //      (IncrementalSmootherParams.h). Mixtures still switching then are checked first at the next update.
 // Opt-in: maxSwitchRounds is 0 by default (steps 0–2 skipped), for the measured reasons in its comment.
 // Invariant after an update (unless the round limit stopped it): every mixture's linearized component is the one
-// active at the estimate, c_f(θ) = c_f(θ ⊕ Δ), and the estimate is the exact Gauss-Newton step at θ with those
-// components: a fixed point of "choose at the estimate, solve", which is what a converged batch solve also
-// satisfies. Mixtures the update did not touch have unchanged θ ⊕ Δ and keep the invariant. A graph without
+// active at the estimate up to the check threshold, i.e. at a point θ ⊕ Δ' with ‖Δ'_v − Δ_v‖∞ ≤ 2 wildfireThreshold
+// on each of its variables (each is within the threshold of its value at its own last check, and the mixture was
+// checked at or after that), and the estimate is the exact Gauss-Newton step at θ with those components: a fixed
+// point of "choose at the estimate, solve", which is what a converged batch solve also satisfies (exactly so with
+// wildfireThreshold 0). The check costs what moved, not the graph: a landmark that every detection touches moves a
+// little at every update, and checking all its mixtures each time made the check grow with the landmark's history
+// (docs/incremental-smoother.md, "Mixtures"). A graph without
 // mixtures does exactly the work, and gets exactly the numbers, it did without this rule.
 //
 // Exactness: with wildfireThreshold = 0 every update's Δ solves the Gauss-Newton system at θ exactly (the tree is
@@ -91,6 +97,7 @@ class IncrementalSmoother final : public Smoother {
     int reeliminatedCliques = 0;
     int solvedCliques = 0;
     bool fullReordering = false;
+    int checkedMixtures = 0;    // mixtures whose component was compared with the one active at the estimate
     int componentSwitches = 0;  // mixtures relinearized because their active component changed (steps 0–1)
     int switchRounds = 0;       // extra solves for them (≤ maxSwitchRounds)
   };
@@ -182,8 +189,12 @@ class IncrementalSmoother final : public Smoother {
   /// relinearization does.
   void relinearizeMixtures(const std::vector<int>& mixtures, MarkedVariables& marked);
   /// The mixtures the last solve touched: linearized in it (scratch_.linearizedMixtures), touching a variable whose
-  /// Δ it changed (scratch_.changedVariables), or left unsettled by the previous update.
+  /// Δ it changed (scratch_.changedVariables) by more than the threshold since the variable's last check
+  /// (movedSinceMixtureCheck), or left unsettled by the previous update.
   std::vector<int> touchedMixtures();
+  /// Whether variable v's Δ has moved by more than the wildfire threshold (∞-norm) since its mixtures were last
+  /// checked; if so, records Δ_v as checked now.
+  bool movedSinceMixtureCheck(int variable);
   /// Steps 1–2: check, relinearize, re-solve (back-substituting with `wildfireThreshold`) until settled or
   /// maxSwitchRounds.
   void settleMixtures(const std::vector<bool>& constrainedLast, double wildfireThreshold);
@@ -221,6 +232,7 @@ class IncrementalSmoother final : public Smoother {
   Values theta_;
   std::vector<Value> thetaById_;  // θ again, by variable id, for the estimate's refresh
   std::vector<double> delta_;
+  std::vector<double> deltaAtMixtureCheck_;  // Δ_v when v's mixtures were last checked (same layout as delta_)
   std::vector<Slot> slots_;
   std::vector<int> pendingMarked_;  // variables of factors replaced since the last update
   std::vector<int> pendingReplaced_;  // slots replaced since the last update (mixtures among them: step 0)

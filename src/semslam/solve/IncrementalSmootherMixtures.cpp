@@ -3,6 +3,9 @@
 
 #include "semslam/solve/IncrementalSmoother.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace semslam {
 
 std::vector<int> IncrementalSmoother::switchedMixtures(const std::vector<int>& slots, bool atTheta) {
@@ -16,6 +19,7 @@ std::vector<int> IncrementalSmoother::switchedMixtures(const std::vector<int>& s
     if (!s.factor || seen[slot] == stamp) continue;  // removed since, or listed twice
     seen[slot] = stamp;
     if (!atTheta && !s.linearization) continue;  // stale: it chooses afresh when linearized
+    ++lastUpdate_.checkedMixtures;
     const int chosen = atTheta ? s.factor->activeComponent(theta_) : s.component;
     if (chosen >= 0 && s.factor->activeComponent(estimate) != chosen) switched.push_back(slot);
   }
@@ -37,6 +41,7 @@ std::vector<int> IncrementalSmoother::touchedMixtures() {
   touched.insert(touched.end(), unsettledMixtures_.begin(), unsettledMixtures_.end());
   unsettledMixtures_.clear();
   for (int v : scratch_.changedVariables) {
+    if (!movedSinceMixtureCheck(v)) continue;
     for (int slot : variables_[v].factors) {
       if (slots_[slot].component >= 0) touched.push_back(slot);
     }
@@ -44,6 +49,18 @@ std::vector<int> IncrementalSmoother::touchedMixtures() {
   scratch_.linearizedMixtures.clear();
   scratch_.changedVariables.clear();
   return touched;
+}
+
+bool IncrementalSmoother::movedSinceMixtureCheck(int variable) {
+  const Variable& v = variables_[variable];
+  const double threshold = forceFull_ ? 0.0 : params_.wildfireThreshold;
+  double moved = 0.0;
+  for (int i = 0; i < v.dimension; ++i) {
+    moved = std::max(moved, std::abs(delta_[v.offset + i] - deltaAtMixtureCheck_[v.offset + i]));
+  }
+  if (moved <= threshold) return false;
+  std::copy_n(delta_.begin() + v.offset, v.dimension, deltaAtMixtureCheck_.begin() + v.offset);
+  return true;
 }
 
 void IncrementalSmoother::settleMixtures(const std::vector<bool>& constrainedLast, double wildfireThreshold) {
