@@ -16,6 +16,17 @@ COLUMNS = ["ate_rmse", "da_accuracy_real", "pairwise_precision", "pairwise_recal
            "landmarks_merged", "landmarks_split", "landmarks_estimated", "time_s"]
 
 
+# ATEs closer than this are equal. Runs that end with the same associations differ only by the round-off of the
+# smoother's arithmetic: ml and mm-nh on KITTI 07 seeds 3, 4, 7 and 8 end 1e-11 to 2e-9 m apart (session 26), and
+# the table prints millimetres. A micrometre is far above that round-off and far below any difference a method makes.
+ATE_TIE_METRES = 1e-6
+
+
+def at_most(ate, reference):
+    """ate ≤ reference, two ATEs within ATE_TIE_METRES of each other counting as equal."""
+    return ate <= reference + ATE_TIE_METRES
+
+
 def _cell(value):
     if value is None:
         return "–"
@@ -99,7 +110,9 @@ def kitti_generalisation_section(semslam, data, scratch, shown):
              "The issue's KITTI target (default options: mm-nh ATE ≤ 2 × known-DA's and ≤ ml's) on every "
              "simulation of the same kind: KITTI odometry sequences 00 and 07, simulator seeds 1-8 (seed 1 of 00 is "
              "the log of the max-mixtures section). `≤ 2 × known`, `≤ ml`: each bound; `target`: both. "
-             "`mm-nh − ml` shows how far apart the two are where the second bound fails.", "",
+             "`mm-nh − ml` shows how far apart the two are where the second bound fails. Two ATEs within a "
+             "micrometre count as equal: runs that end with the same associations differ only by round-off, "
+             "1e-11 to 2e-9 m.", "",
              "| sequence | seed | known ATE [m] | ml ATE [m] | mm-nh ATE [m] | mm-nh − ml [m] | ml da_accuracy_real | "
              "mm-nh da_accuracy_real | mm-nh time [s] | ≤ 2 × known | ≤ ml | target |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|"]
@@ -120,16 +133,17 @@ def kitti_generalisation_section(semslam, data, scratch, shown):
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, (os.cpu_count() or 2))) as pool:
         list(pool.map(lambda job: run_checked(job[4]), jobs))
     results = {(j[0], j[1], j[2]): read_metrics(j[3]) for j in jobs}
-    met = {"known": 0, "ml": 0, "both": 0}
+    met = {"known": 0, "ml": 0, "both": 0, "tied": 0}
     above_ml = []  # (mm-nh's ATE minus ml's, that over ml's) where mm-nh's is the higher
     for sequence, seed in KITTI_LOGS:
         if (sequence, seed, "known") not in results:
             continue
         known, ml, mm = (results[(sequence, seed, m)] for m in KITTI_METHODS)
         within_known = mm["ate_rmse"] <= 2.0 * known["ate_rmse"]
-        within_ml = mm["ate_rmse"] <= ml["ate_rmse"]
+        within_ml = at_most(mm["ate_rmse"], ml["ate_rmse"])
         met["known"] += within_known
         met["ml"] += within_ml
+        met["tied"] += abs(mm["ate_rmse"] - ml["ate_rmse"]) <= ATE_TIE_METRES
         if not within_ml:
             above_ml.append((mm["ate_rmse"] - ml["ate_rmse"], mm["ate_rmse"] / ml["ate_rmse"] - 1.0))
         met["both"] += within_known and within_ml
@@ -139,8 +153,8 @@ def kitti_generalisation_section(semslam, data, scratch, shown):
                      f"{'yes' if within_ml else 'no'} | {'yes' if within_known and within_ml else 'no'} |")
     example = kitti_simulation(semslam, "../shared/data/kitti-odometry-poses/SEQ.txt", "kSEQ-S.jsonl", "S")
     logs = len(results) // len(KITTI_METHODS)
-    lines += ["", f"mm-nh within 2 × known-DA's ATE on {met['known']} of {logs} logs, at most ml's on {met['ml']}, "
-              f"both (the target) on {met['both']}."
+    lines += ["", f"mm-nh within 2 × known-DA's ATE on {met['known']} of {logs} logs, at most ml's on {met['ml']} "
+              f"({met['tied']} of them equal to it to a micrometre), both (the target) on {met['both']}."
               + (f" Where mm-nh's ATE is above ml's, it is so by {min(a for a, _ in above_ml):.4f} to "
                  f"{max(a for a, _ in above_ml):.4f} m (at most {max(r for _, r in above_ml):.1%} of ml's)."
                  if above_ml else ""), "", "```sh",
