@@ -742,11 +742,12 @@ OptimizationResult IncrementalSmoother::convergeAll(const OptimizerParams& param
 
 std::size_t IncrementalSmoother::memoryBytes() const {
   std::size_t bytes = vectorBytes(variables_) + mapBytes(variableIds_) + theta_.memoryBytes() +
-                      vectorBytes(thetaById_) + vectorBytes(delta_) + vectorBytes(deltaAtMixtureCheck_) + vectorBytes(slots_) +
+                      vectorBytes(thetaById_) + vectorBytes(delta_) + vectorBytes(slots_) +
                       vectorBytes(pendingMarked_) + vectorBytes(pendingReplaced_) + vectorBytes(unsettledMixtures_) +
                       vectorBytes(cliques_) + vectorBytes(freeCliques_) + vectorBytes(roots_) +
                       vectorBytes(relinearizationCandidates_) + vectorBytes(isCandidate_) + estimate_.memoryBytes() +
                       vectorBytes(staleEstimates_) + vectorBytes(isStale_) + vectorBytes(estimateSlots_);
+  bytes += vectorBytes(deltaAtMixtureCheck_);
   for (const Variable& v : variables_) bytes += vectorBytes(v.factors);
   for (const Slot& slot : slots_) {
     bytes += vectorBytes(slot.variables);
