@@ -149,7 +149,7 @@ def backends_section(semslam, data, scratch, shown):
         return lines + [f"No dataset of the section is under {data}: section skipped.", ""]
     with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
         list(pool.map(lambda log: run_checked(log[2] + ["--out", log[1]]), logs))
-        jobs = [(name, method, backend, path, os.path.join(scratch, f"{i}-{method}-{backend.split(',')[0]}"))
+        jobs = [(name, method, backend, path, os.path.join(scratch, f"{i}-{method}-{backend}"))
                 for i, (name, path, _, _) in enumerate(logs) for method in METHODS for backend in BACKENDS]
         jobs += [(name, SWITCHING_METHOD, SWITCHING, path, os.path.join(scratch, f"{i}-{SWITCHING_METHOD}-switching"))
                  for i, (name, path, _, _) in enumerate(logs)]
