@@ -31,8 +31,9 @@
 //                         on the logs of docs/association-front-end.md §6, 5 rounds do not bring the incremental
 //                         ATE to the batch back end's, make mm much worse (KITTI 00: 39 m → 186 m; MRCLAM robot 1:
 //                         0.24 → 0.61 m) and, for mm-nh, follow the batch back end into its worse estimates on
-//                         MRCLAM (session 26: da_accuracy_real 0.546 → 0.511 over 15 runs, for +0.03 on KITTI
-//                         tracking; 1.4× the time on Lost in the Woods), so it stays opt-in.
+//                         MRCLAM (session 26: ATE higher on 11 of 15 runs, da_accuracy_real 0.546 → 0.511, while
+//                         KITTI tracking's +0.03 is within its runs' spread; 1.4× the time on Lost in the Woods), so
+//                         it stays opt-in.
 //                         `semslam run --switch-rounds N` sets it (MethodOptions::switchRounds).
 //                         A graph without mixtures is solved bit for bit the same whatever the value.
 
