@@ -189,14 +189,14 @@ class IncrementalSmoother final : public Smoother {
   /// relinearization does.
   void relinearizeMixtures(const std::vector<int>& mixtures, MarkedVariables& marked);
   /// The mixtures the last solve touched: linearized in it (scratch_.linearizedMixtures), touching a variable whose
-  /// Δ it changed (scratch_.changedVariables) by more than the threshold since the variable's last check
+  /// Δ it changed (scratch_.changedVariables) by more than `threshold` since the variable's last check
   /// (movedSinceMixtureCheck), or left unsettled by the previous update.
-  std::vector<int> touchedMixtures();
-  /// Whether variable v's Δ has moved by more than the wildfire threshold (∞-norm) since its mixtures were last
-  /// checked; if so, records Δ_v as checked now.
-  bool movedSinceMixtureCheck(int variable);
-  /// Steps 1–2: check, relinearize, re-solve (back-substituting with `wildfireThreshold`) until settled or
-  /// maxSwitchRounds.
+  std::vector<int> touchedMixtures(double threshold);
+  /// Whether variable v's Δ has moved by more than `threshold` (∞-norm) since its mixtures were last checked; if
+  /// so, records Δ_v as checked now.
+  bool movedSinceMixtureCheck(int variable, double threshold);
+  /// Steps 1–2: check (the mixtures of variables moved by more than `wildfireThreshold`), relinearize, re-solve
+  /// (back-substituting with it) until settled or maxSwitchRounds.
   void settleMixtures(const std::vector<bool>& constrainedLast, double wildfireThreshold);
   /// The part of the tree being re-eliminated: its variables (local index i ↔ variables[i]) and the orphans, the
   /// subtrees left below it with their cached marginals.

@@ -36,12 +36,12 @@ void IncrementalSmoother::relinearizeMixtures(const std::vector<int>& mixtures, 
   }
 }
 
-std::vector<int> IncrementalSmoother::touchedMixtures() {
+std::vector<int> IncrementalSmoother::touchedMixtures(double threshold) {
   std::vector<int> touched = scratch_.linearizedMixtures;
   touched.insert(touched.end(), unsettledMixtures_.begin(), unsettledMixtures_.end());
   unsettledMixtures_.clear();
   for (int v : scratch_.changedVariables) {
-    if (!movedSinceMixtureCheck(v)) continue;
+    if (!movedSinceMixtureCheck(v, threshold)) continue;
     for (int slot : variables_[v].factors) {
       if (slots_[slot].component >= 0) touched.push_back(slot);
     }
@@ -51,9 +51,8 @@ std::vector<int> IncrementalSmoother::touchedMixtures() {
   return touched;
 }
 
-bool IncrementalSmoother::movedSinceMixtureCheck(int variable) {
+bool IncrementalSmoother::movedSinceMixtureCheck(int variable, double threshold) {
   const Variable& v = variables_[variable];
-  const double threshold = forceFull_ ? 0.0 : params_.wildfireThreshold;
   double moved = 0.0;
   for (int i = 0; i < v.dimension; ++i) {
     moved = std::max(moved, std::abs(delta_[v.offset + i] - deltaAtMixtureCheck_[v.offset + i]));
@@ -65,7 +64,7 @@ bool IncrementalSmoother::movedSinceMixtureCheck(int variable) {
 
 void IncrementalSmoother::settleMixtures(const std::vector<bool>& constrainedLast, double wildfireThreshold) {
   for (int round = 0;; ++round) {
-    std::vector<int> switched = switchedMixtures(touchedMixtures(), false);
+    std::vector<int> switched = switchedMixtures(touchedMixtures(wildfireThreshold), false);
     if (switched.empty()) return;
     if (round == params_.maxSwitchRounds) {
       unsettledMixtures_ = std::move(switched);  // checked first at the next update
