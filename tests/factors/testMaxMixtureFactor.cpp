@@ -10,6 +10,7 @@
 #include "semslam/factors/MaxMixtureFactor.h"
 #include "semslam/factors/PriorFactor.h"
 #include "semslam/factors/RangeBearingFactor.h"
+#include "semslam/factors/SeenPointMove.h"
 #include "semslam/graph/NoiseModel.h"
 #include "support/FactorTesting.h"
 
@@ -173,4 +174,62 @@ TEST(MaxMixtureFactor, AWideningThatIsNotOneIsRefused) {
   EXPECT_THROW(build(rangeBearing(kFar, z, 10.0), Widening{0, 10.0}), std::invalid_argument);   // other keys
   EXPECT_THROW(build(rangeBearing(kNear, z, 10.0), Widening{1, 10.0}), std::invalid_argument);  // not earlier
   EXPECT_THROW(build(rangeBearing(kNear, z, 0.5), Widening{0, 0.5}), std::invalid_argument);    // narrower
+}
+
+TEST(MaxMixtureFactor, AChoiceHoldsWithinItsReach) {
+  // Paper B's mixture of one candidate and its widened null, chosen at robot positions across both sides of the
+  // switch and moved, robot and landmark, by every size: wherever the landmark seen from the robot moved by less
+  // than the choice's reach, activeComponent must not have changed; the reach must be large where the choice is
+  // clear (else it saves nothing), and moves across the switch must happen (else the test proves nothing).
+  const double scale = 100.0;
+  const Vector2 z(4.0, 0.0);
+  const MaxMixtureFactor mixture({{rangeBearing(kNear, z), 0.9},
+                                  {rangeBearing(kNear, z, scale), 0.1, MaxMixtureFactor::Widening{0, scale}}});
+  const auto at = [](double y, double landmarkX) {
+    Values values;
+    values.insert(kRobot, SE2(0.0, y, 0.1 * y));
+    values.insert(kNear, Point2(landmarkX, 0.0));
+    return values;
+  };
+  int withinReach = 0, switched = 0, clear = 0;
+  for (double y = -3.0; y <= 3.0; y += 0.05) {
+    const Values values = at(y, 4.0);
+    const MaxMixtureFactor::Choice choice = mixture.chooseAt(values);
+    EXPECT_EQ(choice.component, mixture.activeComponent(values));
+    if (std::abs(y) < 0.05) {
+      ++clear;
+      EXPECT_GT(choice.reach, 0.01) << "y " << y;  // an inlier within a σ: centimetres before the null could win
+    }
+    for (double move : {-1.0, -0.3, -0.1, -1e-2, -1e-3, -1e-5, 1e-5, 1e-3, 1e-2, 0.1, 0.3, 1.0}) {
+      const Values moved = at(y + move, 4.0 - 0.5 * move);
+      const int there = mixture.activeComponent(moved);
+      if (there != choice.component) ++switched;
+      const double distance = seenPointMove(values.at<SE2>(kRobot), values.at<Point2>(kNear), moved.at<SE2>(kRobot),
+                                            moved.at<Point2>(kNear));
+      if (distance < choice.reach) {
+        ++withinReach;
+        EXPECT_EQ(there, choice.component) << "y " << y << ", move " << move;
+      }
+    }
+  }
+  EXPECT_EQ(clear, 2);
+  EXPECT_GT(switched, 50);
+  EXPECT_GT(withinReach, 500);
+}
+
+TEST(MaxMixtureFactor, AChoiceHasNoReachAcrossLandmarksOrThroughAComponentWithoutABound) {
+  const Values values = twoLandmarks(0.0);
+  // Components on two landmarks: each may move its own way, so no single reach.
+  const MaxMixtureFactor twoLandmarkMixture({{rangeBearing(kNear, Vector2(4.0, 0.0)), 0.5},
+                                             {rangeBearing(kFar, Vector2(4.0, 0.0)), 0.5}});
+  EXPECT_EQ(twoLandmarkMixture.chooseAt(values).reach, 0.0);
+  // A prior gives no bound for a seen move.
+  const auto prior = std::make_shared<const PriorFactor<SE2>>(kRobot, SE2(), NoiseModel::isotropic(3, 1.0));
+  const MaxMixtureFactor withPrior({{rangeBearing(kNear, Vector2(4.0, 0.0)), 0.5}, {prior, 0.5}});
+  EXPECT_EQ(withPrior.chooseAt(values).reach, 0.0);
+  EXPECT_EQ(withPrior.chooseAt(values).component, withPrior.activeComponent(values));
+  // The same mixture without the prior has one.
+  const MaxMixtureFactor alone({{rangeBearing(kNear, Vector2(4.0, 0.0)), 0.5},
+                                {rangeBearing(kNear, Vector2(4.0, 0.0), 100.0), 0.5}});
+  EXPECT_GT(alone.chooseAt(values).reach, 0.0);
 }

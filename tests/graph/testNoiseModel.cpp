@@ -103,3 +103,43 @@ TEST(RobustKernel, NoiseModelCarriesTheKernel) {
   EXPECT_EQ(model->robustKernel()->name(), "huber");
   EXPECT_EQ(NoiseModel::isotropic(2, 1.0)->robustKernel(), nullptr);
 }
+
+TEST(NoiseModel, LargestWhitenedNormInABoxAndLargestErrorEntryAreAttained) {
+  // A correlated 2D model: the box's largest ‖R c‖ is at the corner whose signs go against the correlation, and an
+  // error along Σ's i-th column attains |e_i| = ‖r‖ √Σ_ii.
+  Matrix covariance(2, 2);
+  covariance << 0.04, 0.018, 0.018, 0.01;
+  const SharedNoiseModel noise = NoiseModel::fromCovariance(covariance);
+  const Vector2 halfWidths(0.1, 0.05);
+  double largest = 0.0;
+  for (double s0 : {-1.0, 1.0}) {
+    for (double s1 : {-1.0, 1.0}) largest = std::max(largest, noise->whiten(Vector2(s0 * 0.1, s1 * 0.05)).norm());
+  }
+  EXPECT_NEAR(noise->largestWhitenedNormInBox(halfWidths), largest, 1e-12);
+  EXPECT_NEAR(noise->largestWhitenedNormInBox(halfWidths), noise->whiten(Vector2(0.1, -0.05)).norm(), 1e-12);
+  EXPECT_GT(noise->largestWhitenedNormInBox(halfWidths), noise->whiten(Vector2(0.1, 0.05)).norm() * 4.0);
+  for (int i : {0, 1}) {
+    const Vector e = covariance.col(i);  // maximises e_i for a given eᵀΣ⁻¹e
+    const double chi2 = noise->whiten(e).squaredNorm();
+    EXPECT_NEAR(noise->largestErrorEntry(i, chi2), std::abs(e(i)), 1e-12);
+    EXPECT_NEAR(noise->largestErrorEntry(i, 4.0), 2.0 * std::sqrt(covariance(i, i)), 1e-12);
+  }
+}
+
+TEST(NoiseModel, LargestWhitenedNormInABoxIsItsLargestCornerInThreeDimensions) {
+  Matrix covariance(3, 3);
+  covariance << 0.04, -0.01, 0.005, -0.01, 0.09, 0.02, 0.005, 0.02, 0.01;
+  const SharedNoiseModel noise = NoiseModel::fromCovariance(covariance);
+  const Vector3 halfWidths(0.2, 0.1, 0.05);
+  double largest = 0.0;
+  for (int signs = 0; signs < 8; ++signs) {
+    const Vector3 corner((signs & 1 ? -1 : 1) * 0.2, (signs & 2 ? -1 : 1) * 0.1, (signs & 4 ? -1 : 1) * 0.05);
+    largest = std::max(largest, noise->whiten(corner).norm());
+  }
+  EXPECT_NEAR(noise->largestWhitenedNormInBox(halfWidths), largest, 1e-12);
+  for (int trial = 0; trial < 200; ++trial) {  // no point of the box goes further
+    const Vector3 inside = Vector3::Random().cwiseProduct(halfWidths);
+    EXPECT_LE(noise->whiten(inside).norm(), largest + 1e-12);
+  }
+  EXPECT_THROW(noise->largestWhitenedNormInBox(Vector2(0.1, 0.1)), std::invalid_argument);
+}

@@ -60,11 +60,10 @@ void MaxMixtureFactor::checkWidening(std::size_t i) const {
   }
 }
 
-std::pair<int, double> MaxMixtureFactor::choose(const Values& values) const {
-  constexpr std::size_t kInline = 8;  // each component's chi2, for the widenings (no allocation for small mixtures)
-  std::array<double, kInline> inlineChi2;
-  std::vector<double> heapChi2(components_.size() > kInline ? components_.size() : 0);
-  double* chi2s = components_.size() > kInline ? heapChi2.data() : inlineChi2.data();
+std::pair<int, double> MaxMixtureFactor::choose(const Values& values, double* chi2sOut) const {
+  std::array<double, kInlineComponents> inlineChi2;  // each component's chi2, for the widenings
+  std::vector<double> heapChi2(components_.size() > kInlineComponents && !chi2sOut ? components_.size() : 0);
+  double* chi2s = chi2sOut ? chi2sOut : components_.size() > kInlineComponents ? heapChi2.data() : inlineChi2.data();
   int best = 0;
   double bestCost = std::numeric_limits<double>::infinity();
   double bestChi2 = 0.0;
@@ -84,6 +83,62 @@ std::pair<int, double> MaxMixtureFactor::choose(const Values& values) const {
 }
 
 int MaxMixtureFactor::activeComponent(const Values& values) const { return choose(values).first; }
+
+MaxMixtureFactor::Choice MaxMixtureFactor::chooseAt(const Values& values) const {
+  std::array<double, kInlineComponents> inlineChi2;
+  std::vector<double> heapChi2(components_.size() > kInlineComponents ? components_.size() : 0);
+  double* chi2s = components_.size() > kInlineComponents ? heapChi2.data() : inlineChi2.data();
+  Choice choice;
+  choice.component = choose(values, chi2s).first;
+  if (keys().size() != 2) return choice;  // components on several landmarks: each would move its own way
+  const auto certified = [&](double epsilon) { return certifiedWithin(values, chi2s, choice.component, epsilon); };
+  // The reach: from a millimetre, ×4 up while certified, or else ÷4 down to the first certified ε (none at a
+  // nanometre: no reach); then four bisections between the last certified ε and the first not. Certification is
+  // monotone in ε (every bound grows with it), so the bracket holds the largest certified ε.
+  double good = 0.0;
+  double bad = 0.0;
+  if (certified(1e-3)) {
+    good = 1e-3;
+    for (bad = 4e-3; certified(bad) && bad < 1e9; bad *= 4.0) good = bad;
+  } else {
+    if (!certified(1e-9)) return choice;  // at a switch, or a component without a bound
+    for (bad = 1e-3, good = 2.5e-4; !certified(good); good /= 4.0) bad = good;
+  }
+  for (int i = 0; i < 4; ++i) {
+    const double middle = 0.5 * (good + bad);
+    (certified(middle) ? good : bad) = middle;
+  }
+  choice.reach = good;
+  return choice;
+}
+
+bool MaxMixtureFactor::certifiedWithin(const Values& values, const double* chi2s, int chosen, double epsilon) const {
+  const std::size_t n = components_.size();
+  std::array<double, kInlineComponents> inlineBounds;
+  std::vector<double> heapBounds(n > kInlineComponents ? n : 0);
+  double* bounds = n > kInlineComponents ? heapBounds.data() : inlineBounds.data();
+  for (std::size_t i = 0; i < n; ++i) {  // δ_i; a widening's from its original, which comes earlier
+    const std::optional<Widening>& widens = components_[i].widens;
+    if (widens) {
+      bounds[i] = bounds[widens->of] / widens->sigmaScale;
+      continue;
+    }
+    const std::optional<double> bound = components_[i].factor->whitenedErrorBoundForSeenMove(values, chi2s[i], epsilon);
+    if (!bound) return false;
+    bounds[i] = *bound;
+  }
+  const auto cost = [&](std::size_t i, double sign) {  // the largest (+1) or smallest (−1) cost of component i
+    const double norm = std::max(0.0, std::sqrt(chi2s[i]) + sign * bounds[i]);
+    return norm * norm + 2.0 * constants_[i];
+  };
+  const std::size_t best = static_cast<std::size_t>(chosen);
+  const double largest = cost(best, +1.0);
+  const double margin = 1e-9 * (1.0 + largest);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i != best && !(largest + margin < cost(i, -1.0))) return false;
+  }
+  return true;
+}
 
 double MaxMixtureFactor::chi2(const Values& values) const {
   const auto [index, chi2] = choose(values);

@@ -26,6 +26,14 @@
 // sees, docs/association-front-end.md §6b). The declaration is checked where it can be: same keys, same error
 // dimension, and the log-normalisers differing by m ln s (to 1e-9).
 //
+// How far a choice holds (`chooseAt`), for a mixture of detections of one landmark from one pose (paper B's
+// candidate and its null): each component's whitened error moves by at most δ_i(ε) wherever the landmark seen from
+// the robot has moved by at most ε (Factor::whitenedErrorBoundForSeenMove; δ_j(ε) / s for a widening of j), so its
+// cost ‖r_i‖² + 2 (c_i − c_min) there lies within (√chi2_i ∓ δ_i)² + 2 (c_i − c_min) of what it is at the choice,
+// and the choice holds while the chosen component's largest cost stays below every other's smallest. The front end
+// asks, for every detection of every landmark it sees, whether its mixture is on the null hypothesis
+// (docs/association-front-end.md §6b); the landmark has moved a millimetre, and the reach answers nearly all of them.
+//
 // Invariants: at least one component; weights finite and > 0; every component a normalised Gaussian factor
 // (logNormalizer present); a widening refers to an earlier component that is not itself a widening, with the checks
 // above; otherwise std::invalid_argument.
@@ -59,6 +67,17 @@ class MaxMixtureFactor final : public Factor {
   /// The index of the component the mixture uses at `values` (the argmin above; Factor::activeComponent).
   int activeComponent(const Values& values) const override;
 
+  /// A choice and how far it holds.
+  struct Choice {
+    int component = 0;   ///< activeComponent at the point of the choice
+    double reach = 0.0;  ///< the choice holds wherever the landmark seen from the robot moved by at most this
+  };
+  /// activeComponent at `values` and its reach (the header comment): for a mixture whose keys are one robot pose
+  /// and one landmark, the largest ε found (doubling, then bisection) at which the bounds still certify the choice
+  /// with a margin of 1e-9 × (1 + its cost), which round-off cannot close; 0 for other mixtures, where a component
+  /// gives no bound, or where no ε > 0 is certain.
+  Choice chooseAt(const Values& values) const;
+
   void linearize(const Values& values, LinearizedFactor& out) const override;
   double chi2(const Values& values) const override;
 
@@ -66,8 +85,13 @@ class MaxMixtureFactor final : public Factor {
   static std::vector<Key> unionOfKeys(const std::vector<Component>& components);
   /// Throws std::invalid_argument where component i's widening (if any) breaks the header's invariants.
   void checkWidening(std::size_t i) const;
-  /// The chosen component and its chi2 (‖r_i‖²).
-  std::pair<int, double> choose(const Values& values) const;
+  /// Mixtures of up to this many components keep per-component scratch on the stack.
+  static constexpr std::size_t kInlineComponents = 8;
+  /// The chosen component and its chi2 (‖r_i‖²); every component's chi2 into `chi2s[0..n)` where given.
+  std::pair<int, double> choose(const Values& values, double* chi2s = nullptr) const;
+  /// Whether the bounds certify `chosen` at every point where the landmark seen moved by at most `epsilon`, given
+  /// every component's chi2 at `values`.
+  bool certifiedWithin(const Values& values, const double* chi2s, int chosen, double epsilon) const;
 
   std::vector<Component> components_;
   std::vector<double> constants_;  // c_i − c_min ≥ 0

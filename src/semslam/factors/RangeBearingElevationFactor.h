@@ -6,6 +6,10 @@
 // Error convention: e = z ⊖ h(x, l) = (z_r − h_r, wrap(z_b − h_b), wrap(z_e − h_e)); ∂e/∂· = −∂h/∂·.
 // Variables: robot pose x (SE3), landmark l.
 
+#include <cmath>
+#include <numbers>
+#include <optional>
+
 #include "semslam/factors/LandmarkPosition.h"
 #include "semslam/graph/NoiseModelFactor.h"
 #include "semslam/models/RangeBearingElevationSensor3.h"
@@ -37,6 +41,30 @@ class RangeBearingElevationFactor final : public NoiseModelFactor<3, SE3, Landma
     if (Hx) *Hx = -*Hx;
     if (Hl) *Hl = -hWrtPosition * positionWrtLandmark;
     return RangeBearingElevationSensor3::difference(measured_, predicted);
+  }
+
+  /// (Factor::whitenedErrorBoundForSeenMove) The landmark seen from the sensor, p, moves by at most ε (the sensor
+  /// is fixed on the robot). At `from`, ρ₀ = ‖p₀‖ and h₀ = ‖(p₀ₓ, p₀ᵧ)‖. The range moves by at most ε; the bearing
+  /// is the direction of (pₓ, pᵧ), which moves by at most ε too, so it turns by at most tan(asin(ε / h₀)) where
+  /// ε < h₀; the elevation changes by at most the angle between p and p₀ (the polar angle is a distance on the
+  /// sphere), at most tan(asin(ε / ρ₀)). Each angle's error stays off its ±π seam where |e_i(from)| plus its
+  /// half-width is below π (NoiseModel::largestErrorEntry), and then ‖R Δe‖ is at most
+  /// NoiseModel::largestWhitenedNormInBox. None under a robust kernel or where a condition fails.
+  std::optional<double> whitenedErrorBoundForSeenMove(const Values& from, double chi2AtFrom,
+                                                      double epsilon) const override {
+    const NoiseModel& noise = *this->noiseModel();
+    if (noise.robustKernel()) return std::nullopt;
+    const SE3 sensorPose = from.at<SE3>(this->keys()[0]) * sensor_.bodyToSensor();
+    const Point3 seen =
+        sensorPose.transformTo(LandmarkPosition<Landmark>::of(from.at<Landmark>(this->keys()[1]), nullptr));
+    const double horizontal = seen.head<2>().norm();
+    if (!(epsilon < horizontal)) return std::nullopt;  // the bearing could be anything (ρ₀ ≥ h₀)
+    const auto turn = [](double sine) { return sine / std::sqrt(1.0 - sine * sine); };  // tan(asin(sine))
+    const Vector3 halfWidths(epsilon, turn(epsilon / horizontal), turn(epsilon / seen.norm()));
+    for (int i : {1, 2}) {
+      if (!(noise.largestErrorEntry(i, chi2AtFrom) + halfWidths(i) < std::numbers::pi)) return std::nullopt;
+    }
+    return noise.largestWhitenedNormInBox(halfWidths);
   }
 
  private:

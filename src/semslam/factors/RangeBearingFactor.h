@@ -6,6 +6,10 @@
 // Error convention: e = z ⊖ h(x, l) = (z_range − h_range, wrap(z_bearing − h_bearing)), wrapped to (−π, π];
 // hence ∂e/∂· = −∂h/∂·. Variables: robot pose x (SE2), landmark l.
 
+#include <cmath>
+#include <numbers>
+#include <optional>
+
 #include "semslam/factors/LandmarkPosition.h"
 #include "semslam/graph/NoiseModelFactor.h"
 #include "semslam/models/RangeBearingSensor2.h"
@@ -37,6 +41,27 @@ class RangeBearingFactor final : public NoiseModelFactor<2, SE2, Landmark> {
     if (Hx) *Hx = -*Hx;
     if (Hl) *Hl = -hWrtPosition * positionWrtLandmark;
     return RangeBearingSensor2::difference(measured_, predicted);
+  }
+
+  /// (Factor::whitenedErrorBoundForSeenMove) The sensor is fixed on the robot, so the landmark seen from the sensor
+  /// moves by what p = x⁻¹ · l moves, at most ε. From ρ₀, its distance from the sensor at `from`, the range moves by
+  /// at most a = ε and, where ε < ρ₀, the bearing by at most asin(ε / ρ₀) ≤ b = tan(asin(ε / ρ₀)) (the widest angle
+  /// a ball of radius ε subtends at distance ρ₀). The bearing error stays off its ±π seam where |e_b(from)| + b < π,
+  /// and |e_b(from)| ≤ ‖r(from)‖ √Σ_bb (NoiseModel::largestErrorEntry); then Δe lies in the box |Δe_r| ≤ a,
+  /// |Δe_b| ≤ b, and ‖R Δe‖ is at most NoiseModel::largestWhitenedNormInBox. None under a robust kernel or where
+  /// either condition fails.
+  std::optional<double> whitenedErrorBoundForSeenMove(const Values& from, double chi2AtFrom,
+                                                      double epsilon) const override {
+    const NoiseModel& noise = *this->noiseModel();
+    if (noise.robustKernel()) return std::nullopt;
+    const SE2 sensorPose = from.at<SE2>(this->keys()[0]) * sensor_.bodyToSensor();
+    const Point2 position = LandmarkPosition<Landmark>::of(from.at<Landmark>(this->keys()[1]), nullptr);
+    const double distance = (position - sensorPose.translation()).norm();
+    if (!(epsilon < distance)) return std::nullopt;
+    const double sine = epsilon / distance;
+    const Vector2 halfWidths(epsilon, sine / std::sqrt(1.0 - sine * sine));  // a, b
+    if (!(noise.largestErrorEntry(1, chi2AtFrom) + halfWidths(1) < std::numbers::pi)) return std::nullopt;
+    return noise.largestWhitenedNormInBox(halfWidths);
   }
 
  private:

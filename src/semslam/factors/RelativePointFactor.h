@@ -5,6 +5,8 @@
 // Error convention: e = x⁻¹ · l − z = Rᵀ(l − t) − z, in the robot frame.
 // Jacobians: from Pose::transformTo (right perturbation of x) and Rᵀ for the landmark.
 
+#include <optional>
+
 #include "semslam/graph/NoiseModelFactor.h"
 
 namespace semslam {
@@ -25,6 +27,15 @@ class RelativePointFactor final : public NoiseModelFactor<Manifold<Point>::kDim,
 
   ErrorVector evaluateError(const Pose& x, const Point& l, Jacobian<Pose>* Hx, Jacobian<Point>* Hl) const override {
     return x.transformTo(l, Hx, Hl) - measured_;
+  }
+
+  /// (Factor::whitenedErrorBoundForSeenMove) e moves as p = x⁻¹ · l does, by at most ε, so ‖R Δe‖ ≤ ‖R‖₂ ε ≤
+  /// ‖R‖_F ε. None under a robust kernel.
+  std::optional<double> whitenedErrorBoundForSeenMove(const Values& /*from*/, double /*chi2AtFrom*/,
+                                                      double epsilon) const override {
+    const NoiseModel& noise = *this->noiseModel();
+    if (noise.robustKernel()) return std::nullopt;
+    return noise.sqrtInformation().norm() * epsilon;  // R is upper triangular (graph/NoiseModel.h)
   }
 
  private:

@@ -54,6 +54,17 @@ class Factor {
   /// at a new estimate (docs/incremental-smoother.md, "Mixtures").
   virtual int activeComponent(const Values& /*values*/) const { return -1; }
 
+  /// For a detection factor, whose error depends on its variables (keys() = {robot pose x, landmark l}) only through
+  /// p = x⁻¹ · l, the landmark's position as the robot sees it: a bound δ ≥ ‖r(to) − r(from)‖ that holds at every
+  /// `to` where p has moved by at most `epsilon` from where it is at `from` (factors/SeenPointMove.h bounds that
+  /// move from the variables); `chi2AtFrom` is ‖r(from)‖². Then ‖r(to)‖ lies within ‖r(from)‖ ± δ, known without
+  /// evaluating r at `to`. std::nullopt for other factors (the default), under a robust kernel, or where `epsilon` is
+  /// too large for a bound. MaxMixtureFactor::chooseAt uses it to say how far a choice holds.
+  virtual std::optional<double> whitenedErrorBoundForSeenMove(const Values& /*from*/, double /*chi2AtFrom*/,
+                                                              double /*epsilon*/) const {
+    return std::nullopt;
+  }
+
  private:
   std::vector<Key> keys_;
 };

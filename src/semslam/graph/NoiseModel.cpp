@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -102,6 +103,24 @@ SharedNoiseModel NoiseModel::withRobustKernel(SharedRobustKernel kernel) const {
   auto copy = std::shared_ptr<NoiseModel>(new NoiseModel(*this));
   copy->kernel_ = std::move(kernel);
   return copy;
+}
+
+double NoiseModel::largestWhitenedNormInBox(const Vector& halfWidths) const {
+  if (halfWidths.size() != dimension()) throw std::invalid_argument("box of the wrong dimension for the noise model");
+  double largest = 0.0;
+  Vector corner(dimension());
+  for (unsigned signs = 0; signs < (1u << dimension()); ++signs) {
+    for (int i = 0; i < dimension(); ++i) corner(i) = (signs >> i) & 1u ? -halfWidths(i) : halfWidths(i);
+    whitenInPlace(corner);
+    largest = std::max(largest, corner.squaredNorm());
+  }
+  return std::sqrt(largest);
+}
+
+double NoiseModel::largestErrorEntry(int i, double chi2) const {
+  const Vector unit = Vector::Unit(dimension(), i);
+  const Vector row = sqrtInformation_.triangularView<Eigen::Upper>().transpose().solve(unit);  // (row i of R⁻¹)ᵀ
+  return std::sqrt(chi2) * row.norm();
 }
 
 Matrix NoiseModel::covariance() const {

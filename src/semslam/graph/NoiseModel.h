@@ -58,6 +58,13 @@ class NoiseModel {
     }
   }
 
+  /// The largest ‖R c‖ over the box |c_i| ≤ halfWidths_i: how far the whitened error can move when each entry of
+  /// the error moves by at most its half-width. ‖R c‖² is convex, so the largest is at a corner; all 2^d are tried.
+  double largestWhitenedNormInBox(const Vector& halfWidths) const;
+  /// How large |e_i| can be where ‖R e‖² = chi2: ‖r‖ √Σ_ii, with √Σ_ii the norm of row i of R⁻¹ (Cauchy-Schwarz on
+  /// e_i = (R⁻¹ r)_i).
+  double largestErrorEntry(int i, double chi2) const;
+
   Vector whiten(const Vector& error) const {
     Vector r = error;
     whitenInPlace(r);

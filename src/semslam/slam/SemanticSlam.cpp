@@ -11,6 +11,7 @@
 #include "semslam/association/LandmarkSplit.h"
 #include "semslam/association/MarginalLikelihood.h"
 #include "semslam/factors/MaxMixtureFactor.h"
+#include "semslam/factors/SeenPointMove.h"
 #include "semslam/models/HypothesisComponent.h"
 #include "semslam/models/ValueConversions.h"
 #include "semslam/solve/HungarianAssignment.h"
@@ -338,17 +339,38 @@ void SemanticSlam::completeStep() {
 
 std::vector<std::size_t> SemanticSlam::assignedRecordsOnNull(int landmark) const {
   std::vector<std::size_t> onNull;
+  const Key key = landmarks_[landmark].key;
+  const std::pair<Key, const Value*> seen = {key, &smoother_->estimate().value(key)};
   for (std::size_t r : recordsOn(landmark)) {
     const DetectionRecord& record = records_[r];
-    if (record.assigned == landmark && onNullComponent(record)) onNull.push_back(r);
+    if (record.assigned == landmark && onNullComponent(r, &seen)) onNull.push_back(r);
   }
   return onNull;
 }
 
-bool SemanticSlam::onNullComponent(const DetectionRecord& record) const {
+bool SemanticSlam::onNullComponent(std::size_t r, const std::pair<Key, const Value*>* seen) const {
+  const DetectionRecord& record = records_[r];
   if (!record.mixture || record.factors.size() != 1) return false;  // no mixture in force (a plain factor, or none)
-  const int active = record.mixture->activeComponent(smoother_->estimate());
-  return active >= static_cast<int>(record.candidates.size());  // the null component is last
+  const Values& estimate = smoother_->estimate();
+  if (nullChecks_.size() < records_.size()) nullChecks_.resize(records_.size());
+  std::optional<NullCheck>& check = nullChecks_[r];
+  if (check && check->mixture == record.mixture && check->reach > 0.0) {
+    const Value& landmark =
+        seen && seen->first == check->landmarkKey ? *seen->second : estimate.value(check->landmarkKey);
+    const std::optional<double> moved =
+        seenPointMove(check->pose, check->landmark, estimate.value(check->poseKey), landmark);
+    if (moved && *moved < check->reach) return check->onNull;
+  }
+  const MaxMixtureFactor::Choice choice = static_cast<const MaxMixtureFactor&>(*record.mixture).chooseAt(estimate);
+  const bool onNull = choice.component >= static_cast<int>(record.candidates.size());  // the null component is last
+  check = NullCheck{record.mixture, onNull, choice.reach};
+  if (choice.reach > 0.0) {  // a mixture of one pose and one landmark, in that order (MaxMixtureFactor::chooseAt)
+    check->poseKey = record.mixture->keys()[0];
+    check->landmarkKey = record.mixture->keys()[1];
+    check->pose = estimate.value(check->poseKey);
+    check->landmark = estimate.value(check->landmarkKey);
+  }
+  return onNull;
 }
 
 std::optional<double> SemanticSlam::lastSightingOffNull(int landmark, std::size_t lone) const {
@@ -356,7 +378,7 @@ std::optional<double> SemanticSlam::lastSightingOffNull(int landmark, std::size_
   for (auto r = on.rbegin(); r != on.rend(); ++r) {
     const DetectionRecord& record = records_[*r];
     if (record.step >= records_[lone].step) continue;
-    if (!onNullComponent(record)) return stepTimes_[static_cast<std::size_t>(record.step)];
+    if (!onNullComponent(*r)) return stepTimes_[static_cast<std::size_t>(record.step)];
   }
   return std::nullopt;
 }
