@@ -106,9 +106,28 @@ TEST(SeenPointMove, ReadsAnObjectsPositionAndRefusesValuesThatAreNoRobotAndLandm
   EXPECT_FALSE(seenPointMove(Value(robot), Value(Point2(1, 1)), Value(SE3()), Value(Point2(1, 1))));
 }
 
+/// Moves of size below 1e-2, and how many of them the factor bounded.
+struct BoundTally {
+  int small = 0;
+  int bounded = 0;
+};
+
+/// The factor's bound for the move from `from` to `to` (a move of `size`), where it gives one, is at least the true
+/// change of its whitened error.
+void expectBoundHolds(const Factor& factor, const Values& from, const Values& to, double size, BoundTally& tally) {
+  const std::optional<double> bound = factor.whitenedErrorBoundForSeenMove(
+      from, factor.chi2(from),
+      *seenPointMove(from.value(kPose), from.value(kLandmark), to.value(kPose), to.value(kLandmark)));
+  if (size < 1e-2) ++tally.small;
+  if (!bound) return;
+  if (size < 1e-2) ++tally.bounded;
+  const double change = (whitenedError(factor, to) - whitenedError(factor, from)).norm();
+  EXPECT_LE(change, *bound * (1.0 + 1e-9) + 1e-12) << "move of size " << size;
+}
+
 template <class Landmark>
 void expectRangeBearingBoundHolds() {
-  int bounded = 0, small = 0;
+  BoundTally tally;
   for (int trial = 0; trial < 3000; ++trial) {
     const SE2 offset(uniform(-0.5, 0.5), uniform(-0.2, 0.2), uniform(-0.3, 0.3));
     const RangeBearingSensor2 sensor(offset);
@@ -135,17 +154,10 @@ void expectRangeBearingBoundHolds() {
     Vector delta(Manifold<Landmark>::kDim);
     for (int i = 0; i < delta.size(); ++i) delta(i) = uniform(-size, size);
     to.insert(kLandmark, Manifold<Landmark>::retract(landmark, delta));
-    const std::optional<double> bound = factor.whitenedErrorBoundForSeenMove(
-        from, factor.chi2(from),
-        *seenPointMove(from.value(kPose), from.value(kLandmark), to.value(kPose), to.value(kLandmark)));
-    if (size < 1e-2) ++small;
-    if (!bound) continue;
-    if (size < 1e-2) ++bounded;
-    const double change = (whitenedError(factor, to) - whitenedError(factor, from)).norm();
-    EXPECT_LE(change, *bound * (1.0 + 1e-9) + 1e-12) << "trial " << trial;
+    expectBoundHolds(factor, from, to, size, tally);
   }
-  EXPECT_EQ(bounded, small);  // every small move is bounded (none comes near the seam or the sensor here)
-  EXPECT_GT(small, 500);
+  EXPECT_EQ(tally.bounded, tally.small);  // every small move is bounded (none comes near the seam or the sensor here)
+  EXPECT_GT(tally.small, 500);
 }
 
 TEST(RangeBearingFactor, WhitenedErrorChangeBoundHoldsForPointsAndObjectPoses) {
@@ -182,7 +194,7 @@ TEST(RangeBearingFactor, NoWhitenedErrorChangeBoundNearTheBearingsSeamOrPastTheS
 
 template <class Landmark>
 void expectRangeBearingElevationBoundHolds() {
-  int bounded = 0, small = 0;
+  BoundTally tally;
   for (int trial = 0; trial < 3000; ++trial) {
     const RangeBearingElevationSensor3 sensor(
         SE3(SO3::fromAxisAngle(randomVector3(1.0).normalized(), uniform(-0.3, 0.3)), Point3(randomVector3(0.3))));
@@ -211,19 +223,12 @@ void expectRangeBearingElevationBoundHolds() {
     Values to;
     to.insert(kPose, from.at<SE3>(kPose).retract(poseDelta));
     to.insert(kLandmark, Manifold<Landmark>::retract(landmark, delta));
-    const std::optional<double> bound = factor.whitenedErrorBoundForSeenMove(
-        from, factor.chi2(from),
-        *seenPointMove(from.value(kPose), from.value(kLandmark), to.value(kPose), to.value(kLandmark)));
-    if (size < 1e-2) ++small;
-    if (!bound) continue;
-    if (size < 1e-2) ++bounded;
-    const double change = (whitenedError(factor, to) - whitenedError(factor, from)).norm();
-    EXPECT_LE(change, *bound * (1.0 + 1e-9) + 1e-12) << "trial " << trial;
+    expectBoundHolds(factor, from, to, size, tally);
   }
   // Small moves are bounded but for a few of the random covariances so ill-conditioned that ‖r‖ √Σ_ii, the
   // seam test's bound on an angle's error, exceeds π (chi2 of 1e4-1e6 for errors of a few σ).
-  EXPECT_GE(bounded, 0.99 * small);
-  EXPECT_GT(small, 500);
+  EXPECT_GE(tally.bounded, 0.99 * tally.small);
+  EXPECT_GT(tally.small, 500);
 }
 
 TEST(RangeBearingElevationFactor, WhitenedErrorChangeBoundHoldsForPointsAndObjectPoses) {

@@ -12,6 +12,7 @@
 
 #include "semslam/factors/LandmarkPosition.h"
 #include "semslam/graph/NoiseModelFactor.h"
+#include "semslam/models/PointInSensorFrame.h"
 #include "semslam/models/RangeBearingElevationSensor3.h"
 
 namespace semslam {
@@ -54,9 +55,9 @@ class RangeBearingElevationFactor final : public NoiseModelFactor<3, SE3, Landma
                                                       double epsilon) const override {
     const NoiseModel& noise = *this->noiseModel();
     if (noise.robustKernel()) return std::nullopt;
-    const SE3 sensorPose = from.at<SE3>(this->keys()[0]) * sensor_.bodyToSensor();
+    const Point3 position = LandmarkPosition<Landmark>::of(from.at<Landmark>(this->keys()[1]), nullptr);
     const Point3 seen =
-        sensorPose.transformTo(LandmarkPosition<Landmark>::of(from.at<Landmark>(this->keys()[1]), nullptr));
+        pointInSensorFrame(from.at<SE3>(this->keys()[0]), sensor_.bodyToSensor(), position, false, false).p;
     const double horizontal = seen.head<2>().norm();
     if (!(epsilon < horizontal)) return std::nullopt;  // the bearing could be anything (ρ₀ ≥ h₀)
     const auto turn = [](double sine) { return sine / std::sqrt(1.0 - sine * sine); };  // tan(asin(sine))

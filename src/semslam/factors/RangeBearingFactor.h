@@ -12,6 +12,7 @@
 
 #include "semslam/factors/LandmarkPosition.h"
 #include "semslam/graph/NoiseModelFactor.h"
+#include "semslam/models/PointInSensorFrame.h"
 #include "semslam/models/RangeBearingSensor2.h"
 
 namespace semslam {
@@ -54,9 +55,9 @@ class RangeBearingFactor final : public NoiseModelFactor<2, SE2, Landmark> {
                                                       double epsilon) const override {
     const NoiseModel& noise = *this->noiseModel();
     if (noise.robustKernel()) return std::nullopt;
-    const SE2 sensorPose = from.at<SE2>(this->keys()[0]) * sensor_.bodyToSensor();
     const Point2 position = LandmarkPosition<Landmark>::of(from.at<Landmark>(this->keys()[1]), nullptr);
-    const double distance = (position - sensorPose.translation()).norm();
+    const double distance =
+        pointInSensorFrame(from.at<SE2>(this->keys()[0]), sensor_.bodyToSensor(), position, false, false).p.norm();
     if (!(epsilon < distance)) return std::nullopt;
     const double sine = epsilon / distance;
     const Vector2 halfWidths(epsilon, sine / std::sqrt(1.0 - sine * sine));  // a, b
