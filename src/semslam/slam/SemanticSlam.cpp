@@ -11,7 +11,6 @@
 #include "semslam/association/LandmarkSplit.h"
 #include "semslam/association/MarginalLikelihood.h"
 #include "semslam/factors/MaxMixtureFactor.h"
-#include "semslam/factors/SeenPointMove.h"
 #include "semslam/models/HypothesisComponent.h"
 #include "semslam/models/ValueConversions.h"
 #include "semslam/solve/HungarianAssignment.h"
@@ -340,7 +339,7 @@ void SemanticSlam::completeStep() {
 std::vector<std::size_t> SemanticSlam::assignedRecordsOnNull(int landmark) const {
   std::vector<std::size_t> onNull;
   const Key key = landmarks_[landmark].key;
-  const std::pair<Key, const Value*> seen = {key, &smoother_->estimate().value(key)};
+  const MixtureChoiceCache::KnownValue seen = {key, &smoother_->estimate().value(key)};
   for (std::size_t r : recordsOn(landmark)) {
     const DetectionRecord& record = records_[r];
     if (record.assigned == landmark && onNullComponent(r, &seen)) onNull.push_back(r);
@@ -348,29 +347,11 @@ std::vector<std::size_t> SemanticSlam::assignedRecordsOnNull(int landmark) const
   return onNull;
 }
 
-bool SemanticSlam::onNullComponent(std::size_t r, const std::pair<Key, const Value*>* seen) const {
+bool SemanticSlam::onNullComponent(std::size_t r, const MixtureChoiceCache::KnownValue* seen) const {
   const DetectionRecord& record = records_[r];
   if (!record.mixture || record.factors.size() != 1) return false;  // no mixture in force (a plain factor, or none)
-  const Values& estimate = smoother_->estimate();
-  if (nullChecks_.size() < records_.size()) nullChecks_.resize(records_.size());
-  std::optional<NullCheck>& check = nullChecks_[r];
-  if (check && check->mixture == record.mixture && check->reach > 0.0) {
-    const Value& landmark =
-        seen && seen->first == check->landmarkKey ? *seen->second : estimate.value(check->landmarkKey);
-    const std::optional<double> moved =
-        seenPointMove(check->pose, check->landmark, estimate.value(check->poseKey), landmark);
-    if (moved && *moved < check->reach) return check->onNull;
-  }
-  const MaxMixtureFactor::Choice choice = static_cast<const MaxMixtureFactor&>(*record.mixture).chooseAt(estimate);
-  const bool onNull = choice.component >= static_cast<int>(record.candidates.size());  // the null component is last
-  check = NullCheck{record.mixture, onNull, choice.reach};
-  if (choice.reach > 0.0) {  // a mixture of one pose and one landmark, in that order (MaxMixtureFactor::chooseAt)
-    check->poseKey = record.mixture->keys()[0];
-    check->landmarkKey = record.mixture->keys()[1];
-    check->pose = estimate.value(check->poseKey);
-    check->landmark = estimate.value(check->landmarkKey);
-  }
-  return onNull;
+  const int active = nullChecks_.activeComponent(r, record.mixture, smoother_->estimate(), seen);
+  return active >= static_cast<int>(record.candidates.size());  // the null component is last
 }
 
 std::optional<double> SemanticSlam::lastSightingOffNull(int landmark, std::size_t lone) const {

@@ -82,9 +82,9 @@
 #include "semslam/association/LandmarkLifecycle.h"
 #include "semslam/association/MeasurementFactory.h"
 #include "semslam/association/UnassignedHypothesis.h"
-#include "semslam/factors/MaxMixtureFactor.h"
 #include "semslam/models/RunResult.h"
 #include "semslam/slam/AssociationStrategy.h"
+#include "semslam/slam/MixtureChoiceCache.h"
 #include "semslam/solve/SmootherFactory.h"
 
 namespace semslam {
@@ -319,7 +319,7 @@ class SemanticSlam {
   /// Whether record r's mixture is in force and on its null component at the estimate: the last choice
   /// (nullChecks_) while within its reach, else chosen anew. `seen`, where given, is a landmark's key and its value
   /// in the estimate, looked up once for all its records.
-  bool onNullComponent(std::size_t r, const std::pair<Key, const Value*>* seen = nullptr) const;
+  bool onNullComponent(std::size_t r, const MixtureChoiceCache::KnownValue* seen = nullptr) const;
   /// §6c: the time of the newest step before record `lone`'s at which a detection was on `landmark` and off null.
   std::optional<double> lastSightingOffNull(int landmark, std::size_t lone) const;
   FactorPtr gpdaFactor(const DetectionRecord& record, int landmark, double weight) const;
@@ -363,19 +363,8 @@ class SemanticSlam {
   std::vector<DetectionRecord> records_;
   std::vector<std::size_t> firstRecordOfStep_;
   std::vector<double> stepTimes_;
-  /// Per record: onNullComponent's last choice, for the mixture it was made for (held, so that a replacement can
-  /// never share its address), with where the record's pose and landmark then were. A cache: while the landmark
-  /// seen from the robot has moved by less than the choice's reach, the answer is activeComponent's (§6b).
-  struct NullCheck {
-    FactorPtr mixture;
-    bool onNull = false;
-    double reach = 0.0;
-    Key poseKey = 0;  // the mixture's keys, and where the choice was made (set where reach > 0)
-    Key landmarkKey = 0;
-    Value pose = Point2(0.0, 0.0);
-    Value landmark = Point2(0.0, 0.0);
-  };
-  mutable std::vector<std::optional<NullCheck>> nullChecks_;
+  /// Per record: onNullComponent's last choice and its reach (§6b).
+  mutable MixtureChoiceCache nullChecks_;
   /// A step between beginStep and completeStep.
   struct PendingStep {
     double time = 0.0;
