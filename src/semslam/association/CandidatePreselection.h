@@ -23,6 +23,7 @@
 // positions of the estimate select() last read; same inputs, same output (no hashing order reaches the result).
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "semslam/association/AssociationGate.h"
@@ -52,6 +53,12 @@ class CandidatePreselection {
   void refresh(const JointMarginal& marginal, const std::vector<int>& landmarks);
 
   int tracked() const { return grid_.size(); }
+  /// Landmark j's spread bound σ_l (kSpreadSafety × √λmax of its last computed position covariance, see above), or
+  /// none for a landmark not tracked yet (created since the last select()).
+  std::optional<double> spread(int landmark) const {
+    if (landmark < 0 || landmark >= grid_.size()) return std::nullopt;
+    return grid_.spread(landmark);
+  }
   double cellSize() const { return grid_.cellSize(); }
 
  private:

@@ -104,12 +104,26 @@ FactorPtr MeasurementFactory::landmarkPriorFactor(Key landmark, const LandmarkPr
                     landmarkValue(landmarkPrior.mean));
 }
 
-FactorPtr MeasurementFactory::detectionFactor(Key pose, Key landmark, const Detection& detection,
-                                              double sigmaScale, SharedRobustKernel kernel) const {
+SharedNoiseModel MeasurementFactory::detectionNoise(const Detection& detection, double sigmaScale,
+                                                   SharedRobustKernel kernel) const {
   checkDetection(detection);
   if (!(sigmaScale > 0.0)) throw std::invalid_argument("sigma scale must be positive");
   SharedNoiseModel noise = NoiseModel::fromCovariance(detection.covariance * (sigmaScale * sigmaScale));
   if (kernel) noise = noise->withRobustKernel(std::move(kernel));
+  return noise;
+}
+
+FactorPtr MeasurementFactory::detectionFactor(Key pose, Key landmark, const Detection& detection,
+                                              double sigmaScale, SharedRobustKernel kernel) const {
+  return detectionFactor(pose, landmark, detection, detectionNoise(detection, sigmaScale, std::move(kernel)));
+}
+
+FactorPtr MeasurementFactory::detectionFactor(Key pose, Key landmark, const Detection& detection,
+                                              SharedNoiseModel noise) const {
+  checkDetection(detection);
+  if (!noise || noise->dimension() != detection.covariance.rows()) {
+    throw std::invalid_argument("detection noise model does not match the detection's covariance");
+  }
   const Vector& g = detection.geometry;
   switch (sensor_.kind) {
     case SensorKind::RangeBearing: {

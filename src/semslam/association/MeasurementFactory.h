@@ -18,6 +18,7 @@
 // std::invalid_argument naming it.
 
 #include "semslam/graph/Factor.h"
+#include "semslam/graph/NoiseModel.h"
 #include "semslam/graph/RobustKernel.h"
 #include "semslam/graph/Values.h"
 #include "semslam/models/MeasurementLog.h"
@@ -41,6 +42,12 @@ class MeasurementFactory {
   /// (a null hypothesis is the same factor with a broad Gaussian); an optional robust kernel on its whitened error.
   FactorPtr detectionFactor(Key pose, Key landmark, const Detection& detection, double sigmaScale = 1.0,
                             SharedRobustKernel kernel = nullptr) const;
+  /// The same with the noise model given: a detection weighed against several landmarks builds its noise model
+  /// (detectionNoise) once.
+  FactorPtr detectionFactor(Key pose, Key landmark, const Detection& detection, SharedNoiseModel noise) const;
+  /// The noise model of detectionFactor: the detection's covariance times sigmaScale², with the optional kernel.
+  SharedNoiseModel detectionNoise(const Detection& detection, double sigmaScale = 1.0,
+                                  SharedRobustKernel kernel = nullptr) const;
 
   /// The pose after `odometry` from `previous`.
   Value predictPose(const Value& previous, const Odometry& odometry) const;

@@ -411,18 +411,20 @@ bool SemanticSlam::escapeNullBasins(int k) {
 }
 
 LinearizedLikelihood SemanticSlam::geometricLikelihood(const JointMarginal& marginal, const Landmark& landmark,
-                                                       const Detection& detection) const {
+                                                       const Detection& detection,
+                                                       const SharedNoiseModel& noise) const {
   const Key pose = poseKeys_.back();
-  const std::vector<FactorPtr> factor = {factory_.detectionFactor(pose, landmark.key, detection)};
+  const std::vector<FactorPtr> factor = {factory_.detectionFactor(pose, landmark.key, detection, noise)};
   return linearizedLikelihood(factor, smoother_->estimate(), marginal.restrictedTo({pose, landmark.key}));
 }
 
 void SemanticSlam::findCandidates(const JointMarginal& marginal, const std::vector<int>& considered,
                                   DetectionRecord& record) const {
   std::vector<double> logWeights;
+  const SharedNoiseModel noise = factory_.detectionNoise(record.measurement);
   for (int j : considered) {
     const Landmark& landmark = landmarks_[j];
-    const LinearizedLikelihood geometric = geometricLikelihood(marginal, landmark, record.measurement);
+    const LinearizedLikelihood geometric = geometricLikelihood(marginal, landmark, record.measurement, noise);
     if (!gate_.accepts(geometric)) continue;
     const double semantic = landmark.classBelief.predictive(record.semanticLikelihoods);
     if (!(semantic > 0.0)) continue;  // a label this landmark's class belief rules out (exact model, p = 0)
@@ -441,11 +443,12 @@ void SemanticSlam::findCandidatesWithUnassigned(const JointMarginal* marginal, c
   if (!(labelPrior > 0.0) || !std::isfinite(labelPrior)) labelPrior = 1.0;
   record.unassignedLogLikelihood = unassigned_.logDensity(record.measurement) + std::log(labelPrior);  // (§1)
   if (!marginal) return;
+  const SharedNoiseModel noise = factory_.detectionNoise(record.measurement);
   for (int j : considered) {
     const Landmark& landmark = landmarks_[j];
     const double semantic = landmark.classBelief.predictive(record.semanticLikelihoods);
     if (!(semantic > 0.0)) continue;  // a label this landmark's class belief rules out
-    const LinearizedLikelihood geometric = geometricLikelihood(*marginal, landmark, record.measurement);
+    const LinearizedLikelihood geometric = geometricLikelihood(*marginal, landmark, record.measurement, noise);
     // The joint gate (§3): g = d² − 2 ln(P(s | j) / P₀(s)) against the χ²_m quantile.
     const double jointStatistic = geometric.innovationChi2 - 2.0 * std::log(semantic / labelPrior);
     if (jointStatistic > gate_.threshold(geometric.dimension)) continue;
@@ -500,9 +503,10 @@ std::vector<std::size_t> SemanticSlam::anchoringDetections() const {
     const Detection& detection = records_[r].measurement;
     // ln N(z; ẑ, S) = −½ d² − ½ m ln 2π − ½ ln det S and the detection's logNormalizer n_R = ½ m ln 2π + ½ ln det R,
     // so I = ½ ln det(S R⁻¹) = −(ln N + ½ d² + n_R) (docs/association-front-end.md §10).
-    const LinearizedLikelihood geometric = geometricLikelihood(*pending_->marginal, landmarks_[landmark], detection);
-    const double logNormalizer =
-        factory_.detectionFactor(poseKeys_.back(), landmarks_[landmark].key, detection)->logNormalizer().value();
+    const SharedNoiseModel noise = factory_.detectionNoise(detection);
+    const LinearizedLikelihood geometric =
+        geometricLikelihood(*pending_->marginal, landmarks_[landmark], detection, noise);
+    const double logNormalizer = noise->logNormalizer();
     const double information = -(geometric.logLikelihood + 0.5 * geometric.innovationChi2 + logNormalizer);
     if (information > options_.anchoringInformation) anchoring.push_back(r);
   }
@@ -860,9 +864,62 @@ void SemanticSlam::mergeDuplicateLandmarks(const std::vector<bool>& seen, std::v
     }
   }
   if (nearby.empty() && movers.size() < 2) return;  // nothing to merge into: no marginal to take
+  const auto targetsOf = [&](int p) {
+    std::vector<int> targets;
+    for (int l : nearby) {
+      if (lifecycle_.active(l)) targets.push_back(l);
+    }
+    const bool provisional = lifecycle_.provisional(p);
+    for (int q : movers) {
+      if (q == p || !lifecycle_.active(q)) continue;
+      // A provisional landmark goes into a confirmed one or an older provisional one; a confirmed one is tested
+      // against confirmed ones only (a provisional one is tested against it in its own turn).
+      if (provisional ? (!lifecycle_.provisional(q) || q < p) : !lifecycle_.provisional(q)) targets.push_back(q);
+    }
+    return targets;
+  };
+  // What rules a pair out without the joint marginal: too far apart, split apart (§5d), seen at one step
+  // (exclusion, §4), or a difference beyond the gate's reach. The gate below needs d = p_P − p_L within
+  // √T √λmax(Σ_d), and the standard deviations of a difference add whatever the correlation: √λmax(Σ_d) ≤ σ_P + σ_L,
+  // with σ the pre-selection's spread bounds (§7, each at least √λmax of its landmark's position block). A step on
+  // which every pair is ruled out takes no joint marginal.
+  const double gateRadius = std::sqrt(gate_.threshold(factory_.dimension()));
+  const auto mayMerge = [&](int p, const std::vector<int>& stepsOfP, int l) {
+    const double distance = (position(p) - position(l)).norm();
+    if (distance > range) return false;
+    const std::vector<int>& distinct = landmarks_[p].distinctFrom;
+    if (std::find(distinct.begin(), distinct.end(), l) != distinct.end()) return false;
+    const std::optional<double> spreadP = preselection_.spread(p), spreadL = preselection_.spread(l);
+    if (options_.candidatePreselection && spreadP && spreadL && distance > gateRadius * (*spreadP + *spreadL)) {
+      return false;
+    }
+    const std::vector<int> stepsOfL = stepsOn(l);
+    std::vector<int> shared;
+    std::set_intersection(stepsOfP.begin(), stepsOfP.end(), stepsOfL.begin(), stepsOfL.end(),
+                          std::back_inserter(shared));
+    return shared.empty();
+  };
+  // The joint marginal of the landmarks of the pairs left: every pair of a mover and another mover or a nearby
+  // landmark, whatever targetsOf's order says now, since a merge below may confirm a provisional landmark. A merge
+  // never brings back a pair ruled out here: positions, spreads and splits stay as they are, a merged landmark
+  // leaves, and one that receives detections shares more steps.
+  std::vector<bool> inPair(static_cast<std::size_t>(landmarks()), false);
+  for (int p : movers) {
+    const std::vector<int> stepsOfP = stepsOn(p);
+    for (const std::vector<int>* group : {&movers, &nearby}) {
+      for (int l : *group) {
+        if (l == p || !mayMerge(p, stepsOfP, l)) continue;
+        inPair[static_cast<std::size_t>(p)] = inPair[static_cast<std::size_t>(l)] = true;
+      }
+    }
+  }
   std::vector<Key> keys;
-  for (int j : movers) keys.push_back(landmarks_[j].key);
-  for (int j : nearby) keys.push_back(landmarks_[j].key);
+  for (const std::vector<int>* group : {&movers, &nearby}) {
+    for (int j : *group) {
+      if (inPair[static_cast<std::size_t>(j)]) keys.push_back(landmarks_[j].key);
+    }
+  }
+  if (keys.empty()) return;
   const JointMarginal marginal = smoother_->jointMarginal(keys);
   const int d = factory_.dimension();
   auto toWorld = [&](int j) -> Matrix {  // J: the landmark tangent's position part in the world frame
@@ -880,19 +937,9 @@ void SemanticSlam::mergeDuplicateLandmarks(const std::vector<bool>& seen, std::v
     const std::vector<int> stepsOfP = stepsOn(p);
     std::optional<int> best;
     double bestScore = unassigned_.logCartesianDensity();
-    std::vector<int> targets;
-    for (int l : nearby) {
-      if (lifecycle_.active(l)) targets.push_back(l);
-    }
-    for (int q : movers) {
-      if (q == p || !lifecycle_.active(q)) continue;
-      // A provisional landmark goes into a confirmed one or an older provisional one; a confirmed one is tested
-      // against confirmed ones only (a provisional one is tested against it in its own turn).
-      if (provisional ? (!lifecycle_.provisional(q) || q < p) : !lifecycle_.provisional(q)) targets.push_back(q);
-    }
-    for (int l : targets) {
+    for (int l : targetsOf(p)) {
+      if (!mayMerge(p, stepsOfP, l)) continue;
       const Vector difference = position(p) - position(l);
-      if (difference.norm() > range) continue;
       const JointMarginal pair = marginal.restrictedTo({landmarks_[p].key, landmarks_[l].key});
       const Matrix jp = toWorld(p), jl = toWorld(l);
       const Matrix cross = jp * pair.block(landmarks_[p].key, landmarks_[l].key) * jl.transpose();
@@ -911,13 +958,6 @@ void SemanticSlam::mergeDuplicateLandmarks(const std::vector<bool>& seen, std::v
       if (!(sameClass > 0.0)) continue;
       const double score = logGaussian + std::log(sameClass);
       if (score <= bestScore) continue;
-      const std::vector<int>& distinct = landmarks_[p].distinctFrom;
-      if (std::find(distinct.begin(), distinct.end(), l) != distinct.end()) continue;  // split apart (§5d)
-      const std::vector<int> stepsOfL = stepsOn(l);
-      std::vector<int> shared;
-      std::set_intersection(stepsOfP.begin(), stepsOfP.end(), stepsOfL.begin(), stepsOfL.end(),
-                            std::back_inserter(shared));
-      if (!shared.empty()) continue;
       best = l;
       bestScore = score;
     }

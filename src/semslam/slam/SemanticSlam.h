@@ -252,9 +252,10 @@ class SemanticSlam {
   /// Posterior of the best candidate against the others and (BirthRule::Unassigned) the unassigned hypothesis.
   static double bestPosterior(const DetectionRecord& record);
   /// p_geo(z | landmark) of step 2 at the current estimate: the detection's factor to `landmark` from the newest
-  /// pose, linearised under the pair's block of `marginal` (MarginalLikelihood.h). Both birth rules use it.
+  /// pose, linearised under the pair's block of `marginal` (MarginalLikelihood.h). Both birth rules use it. `noise`:
+  /// the detection's (MeasurementFactory::detectionNoise), made once for all the landmarks it is weighed against.
   LinearizedLikelihood geometricLikelihood(const JointMarginal& marginal, const Landmark& landmark,
-                                           const Detection& detection) const;
+                                           const Detection& detection, const SharedNoiseModel& noise) const;
   /// Candidates among `considered` (ascending landmark indices, all in `marginal`) and their normalised weights for
   /// `detection` at the current estimate (step 2). Landmarks created during this step are not considered (the
   /// marginal predates them; a landmark produces at most one detection per step).

@@ -77,13 +77,20 @@ int IncrementalSmoother::addVariable(Key key, const Value& value) {
 }
 
 void IncrementalSmoother::attach(int slot) {
-  for (int v : slots_[slot].variables) variables_[v].factors.push_back(slot);
+  const std::vector<int>& joined = slots_[slot].variables;
+  for (int v : joined) {
+    variables_[v].factors.push_back(slot);
+    const int partner = joined.size() == 1 ? v : joined.size() == 2 ? joined[joined[0] == v ? 1 : 0] : -1;
+    variables_[v].partners.push_back(partner);
+  }
 }
 
 void IncrementalSmoother::detach(int slot) {
   for (int v : slots_[slot].variables) {
     auto& list = variables_[v].factors;
-    list.erase(std::find(list.begin(), list.end(), slot));
+    const auto at = std::find(list.begin(), list.end(), slot);
+    variables_[v].partners.erase(variables_[v].partners.begin() + (at - list.begin()));
+    list.erase(at);
   }
 }
 
@@ -319,12 +326,17 @@ std::vector<int> IncrementalSmoother::gatherFactorsInside(const std::vector<int>
   std::vector<int>& seen = scratch_.slotStamp;
   seen.resize(slots_.size(), 0);
   const int stamp = ++scratch_.stamp;
-  for (int v : eliminated) {
-    for (int slot : variables_[v].factors) {
+  for (int v : eliminated) {  // v is inside: a factor is when its partner is (or, of 3+ variables, all of them are)
+    const Variable& variable = variables_[v];
+    for (std::size_t i = 0; i < variable.factors.size(); ++i) {
+      const int slot = variable.factors[i], partner = variable.partners[i];
+      if (partner >= 0 && localIndexOf(partner) < 0) continue;
       if (seen[slot] == stamp) continue;
       seen[slot] = stamp;
       bool inside = true;
-      for (int u : slots_[slot].variables) inside = inside && localIndexOf(u) >= 0;
+      if (partner < 0) {
+        for (int u : slots_[slot].variables) inside = inside && localIndexOf(u) >= 0;
+      }
       if (inside) gathered.push_back(slot);
     }
   }
@@ -748,7 +760,7 @@ std::size_t IncrementalSmoother::memoryBytes() const {
                       vectorBytes(relinearizationCandidates_) + vectorBytes(isCandidate_) + estimate_.memoryBytes() +
                       vectorBytes(staleEstimates_) + vectorBytes(isStale_) + vectorBytes(estimateSlots_);
   bytes += vectorBytes(deltaAtMixtureCheck_);
-  for (const Variable& v : variables_) bytes += vectorBytes(v.factors);
+  for (const Variable& v : variables_) bytes += vectorBytes(v.factors) + vectorBytes(v.partners);
   for (const Slot& slot : slots_) {
     bytes += vectorBytes(slot.variables);
     if (slot.linearization) {

@@ -140,6 +140,10 @@ class IncrementalSmoother final : public Smoother {
     int dimension = 0;
     int offset = 0;            // of Δ_v in delta_
     std::vector<int> factors;  // slots in force touching it
+    // Beside each slot of `factors`, the variable it joins this one to: the other one of a binary factor, this one
+    // of a unary factor, −1 for a factor of more variables. It spares the gathering of step 3 a visit to every slot
+    // of a landmark seen many times (gatherFactorsInside).
+    std::vector<int> partners;
     int clique = -1;           // the clique holding it as a frontal, −1 when it is not in the tree
   };
   /// A factor linearized at θ, in information form over its variables: JᵀJ and −Jᵀr (whitened), computed once per
