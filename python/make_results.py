@@ -18,6 +18,7 @@ import tempfile
 import plot_hybrid
 import results_association
 import results_association_oracles
+import results_association_ceiling
 import results_backends
 import results_commands
 import results_association_defaults
@@ -313,7 +314,8 @@ def bounded_memory_lines(semslam, data, scratch, litw):
 
 
 SECTIONS = ["pose-graphs", "evo", "datasets", "hybrid", "hybrid-mrclam", "hybrid-scaling", "max-mixtures",
-            "robustness", "association", "association-oracles", "association-defaults", "loop-closure-branches",
+            "robustness", "association", "association-oracles", "association-ceiling", "association-defaults",
+            "loop-closure-branches",
             "loop-closure-next-best", "loop-closure-open-splits", "kitti-tracking", "back-ends", "studies-mpi"]
 
 
@@ -336,6 +338,9 @@ def section_lines(name, semslam, data, scratch):
         body = results_association.association_section(semslam, data, scratch, lambda command: shown(command, data))
     elif name == "association-oracles":
         body = results_association_oracles.association_oracles_section(semslam, data, scratch,
+                                                                       lambda command: shown(command, data))
+    elif name == "association-ceiling":
+        body = results_association_ceiling.association_ceiling_section(semslam, data, scratch,
                                                                        lambda command: shown(command, data))
     elif name == "association-defaults":
         body = results_association_defaults.association_defaults_section(semslam, data, scratch)

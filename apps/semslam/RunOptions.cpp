@@ -30,8 +30,14 @@ void addRunMethodOptions(CLI::App* command, RunMethodArguments& arguments) {
   command->add_flag("--on-known-trajectory", arguments.onKnownTrajectory,
                     "paper B's methods: pin the poses to the known-association estimate (the association ceiling)");
   command->add_option("--pose-error-scale", arguments.poseErrorScale,
-                      "with --on-known-trajectory: move each pose k by a draw from N(0, s² Σ_k), Σ_k its known-DA covariance")
+                      "with --on-known-trajectory: move the poses by a draw of s times their known-DA uncertainty "
+                      "(--pose-error-draw)")
       ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  command->add_option("--pose-error-draw", arguments.poseErrorDraw,
+                      "with --pose-error-scale: joint (the trajectory from the known-DA posterior, errors correlated "
+                      "as the estimate's) or independent (each pose from its own marginal)")
+      ->check(CLI::IsMember({"joint", "independent"}))
       ->capture_default_str();
   command->add_option("--seed", arguments.options.hybrid.seed,
                       "hybrid: seed of the Monte Carlo draws; --pose-error-scale: seed of the pose errors")
@@ -48,8 +54,10 @@ MethodRun runFromArguments(const MeasurementLog& log, RunMethodArguments argumen
   options.poseCovariances = !arguments.noCovariances;
   try {
     if (arguments.onKnownTrajectory) {
+      const PoseErrorDraw draw =
+          arguments.poseErrorDraw == "independent" ? PoseErrorDraw::Independent : PoseErrorDraw::Joint;
       return runOnKnownTrajectory(log, options, arguments.poseErrorScale,
-                                  static_cast<std::uint32_t>(options.hybrid.seed));
+                                  static_cast<std::uint32_t>(options.hybrid.seed), draw);
     }
     return runMethod(log, options, progress);
   } catch (const std::invalid_argument& error) {

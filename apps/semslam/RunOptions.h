@@ -22,6 +22,7 @@ struct RunMethodArguments {
   bool noCovariances = false;
   bool onKnownTrajectory = false;
   double poseErrorScale = 0.0;
+  std::string poseErrorDraw = "joint";
   MethodOptions options;
 };
 

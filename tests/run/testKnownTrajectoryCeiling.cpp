@@ -30,6 +30,15 @@ MeasurementLog simulatedRun(int dimension) {
   return simulateSemantic(generatePath(path, rng), options, 5);
 }
 
+/// `method` with neither a run folder nor pose covariances (what these tests do not look at).
+MethodOptions withoutExtras(Method method) {
+  MethodOptions options;
+  options.method = method;
+  options.runFolder = false;
+  options.poseCovariances = false;
+  return options;
+}
+
 /// Largest tangent distance between two trajectories of one kind.
 double largestDifference(const std::vector<Pose>& a, const std::vector<Pose>& b) {
   double worst = 0.0;
@@ -94,16 +103,9 @@ TEST(KnownTrajectoryCeiling, PoseErrorsHaveTheScaledCovariance) {
 
 TEST(KnownTrajectoryCeiling, AMethodOnThePinnedLogKeepsTheKnownAssociationTrajectory) {
   const MeasurementLog log = simulatedRun(2);
-  MethodOptions known;
-  known.method = Method::Known;
-  known.runFolder = false;
-  known.poseCovariances = false;
-  const MethodRun reference = runMethod(log, known);
-  MethodOptions options;
-  options.method = Method::MaxMixtureNullHypothesis;
+  const MethodRun reference = runMethod(log, withoutExtras(Method::Known));
+  MethodOptions options = withoutExtras(Method::MaxMixtureNullHypothesis);
   options.slam.birth = BirthRule::Unassigned;
-  options.runFolder = false;
-  options.poseCovariances = false;
   const MethodRun ceiling = runOnKnownTrajectory(log, options, 0.0, 1);
   EXPECT_EQ(ceiling.result.method, "mm-nh@known-trajectory");
   EXPECT_EQ(ceiling.evaluation.metrics.method, ceiling.result.method);
@@ -121,4 +123,39 @@ TEST(KnownTrajectoryCeiling, AMethodOnThePinnedLogKeepsTheKnownAssociationTrajec
   EXPECT_THROW(runOnKnownTrajectory(log, branched, 0.0, 1), std::invalid_argument);
   options.method = Method::Hybrid;
   EXPECT_THROW(runOnKnownTrajectory(log, options, 0.0, 1), std::invalid_argument);
+}
+
+namespace {
+
+/// Mean over k of ‖(x_k⁻¹ x_{k+1}) ⊖ (y_k⁻¹ y_{k+1})‖: how far two trajectories' consecutive motions differ.
+double meanRelativeDifference(const std::vector<Pose>& a, const std::vector<Pose>& b) {
+  double sum = 0.0;
+  for (std::size_t k = 0; k + 1 < a.size(); ++k) {
+    const SE2 motionA = std::get<SE2>(a[k]).between(std::get<SE2>(a[k + 1]));
+    const SE2 motionB = std::get<SE2>(b[k]).between(std::get<SE2>(b[k + 1]));
+    sum += Manifold<SE2>::local(motionA, motionB).norm();
+  }
+  return sum / static_cast<double>(a.size() - 1);
+}
+
+}  // namespace
+
+TEST(KnownTrajectoryCeiling, AJointPoseErrorKeepsTheEstimatesRelativeErrorsWhereIndependentOnesDoNot) {
+  const MeasurementLog log = simulatedRun(2);
+  const MethodOptions options = withoutExtras(Method::Known);
+  const MethodRun reference = runMethod(log, options);
+  const MethodRun joint = runOnKnownTrajectory(log, options, 1.0, 7, PoseErrorDraw::Joint);
+  const MethodRun independent = runOnKnownTrajectory(log, options, 1.0, 7, PoseErrorDraw::Independent);
+  // Both move the poses by about their marginal σ (the known-association estimate's: centimetres here) ...
+  EXPECT_GT(largestDifference(joint.result.poses, reference.result.poses), 1e-3);
+  EXPECT_GT(largestDifference(independent.result.poses, reference.result.poses), 1e-3);
+  // ... but only the independent draw gives neighbouring poses independent errors: between consecutive poses the
+  // joint draw differs from the estimate by the posterior's relative uncertainty, a fraction of the marginal one.
+  const double jointRelative = meanRelativeDifference(joint.result.poses, reference.result.poses);
+  const double independentRelative = meanRelativeDifference(independent.result.poses, reference.result.poses);
+  EXPECT_LT(jointRelative, 0.5 * independentRelative) << jointRelative << " against " << independentRelative;
+  // Seeded: the same draw again.
+  const MethodRun again = runOnKnownTrajectory(log, options, 1.0, 7, PoseErrorDraw::Joint);
+  EXPECT_EQ(largestDifference(again.result.poses, joint.result.poses), 0.0);
+  EXPECT_THROW(runOnKnownTrajectory(log, options, -1.0, 7), std::invalid_argument);
 }

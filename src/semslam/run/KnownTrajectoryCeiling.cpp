@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "semslam/geometry/Manifold.h"
+#include "semslam/models/PosteriorSampler.h"
 #include "semslam/models/Sampling.h"
 
 namespace semslam {
@@ -57,8 +58,33 @@ std::vector<Pose> perturbedTrajectory(const std::vector<Pose>& trajectory, const
   return moved;
 }
 
+namespace {
+
+/// Step 2's joint draw: the poses of X̂ ⊕ s δ, δ from the known-association posterior (PosteriorSampler.h).
+std::vector<Pose> jointlyPerturbedTrajectory(const MethodRun& reference, double scale, std::uint32_t seed) {
+  const PosteriorSampler sampler(reference.finalGraph, reference.finalEstimate);
+  std::mt19937 rng(seed);
+  const Values drawn = sampler.draw(scale, rng);
+  std::vector<Pose> moved;
+  for (std::size_t k = 0; k < reference.result.poses.size(); ++k) {
+    moved.push_back(std::visit(
+        [](const auto& value) -> Pose {
+          using T = std::decay_t<decltype(value)>;
+          if constexpr (std::is_same_v<T, SE2> || std::is_same_v<T, SE3>) return value;
+          else throw std::logic_error("a pose key holds no pose");
+        },
+        drawn.value(poseKey(k))));
+  }
+  return moved;
+}
+
+}  // namespace
+
 MethodRun runOnKnownTrajectory(const MeasurementLog& log, const MethodOptions& options, double poseErrorScale,
-                               std::uint32_t seed) {
+                               std::uint32_t seed, PoseErrorDraw draw) {
+  if (!(poseErrorScale >= 0.0) || !std::isfinite(poseErrorScale)) {
+    throw std::invalid_argument("pose error scale must be finite and >= 0");
+  }
   if (isHybrid(options.method)) throw std::invalid_argument("the known-trajectory ceiling is for paper B's methods");
   MethodOptions known = options;
   known.method = Method::Known;
@@ -68,11 +94,15 @@ MethodRun runOnKnownTrajectory(const MeasurementLog& log, const MethodOptions& o
   known.slam.loopClosureBranchWindow.reset();
   known.slam.loopClosureNextBest.reset();
   known.slam.loopClosureOpenSplits.reset();
-  known.poseCovariances = poseErrorScale > 0.0;
+  const bool moved = poseErrorScale > 0.0;
+  known.poseCovariances = moved && draw == PoseErrorDraw::Independent;
+  known.keepFinalGraph = moved && draw == PoseErrorDraw::Joint;
   known.runFolder = false;
   const MethodRun reference = runMethod(log, known);
   const std::vector<Pose> trajectory =
-      perturbedTrajectory(reference.result.poses, reference.result.poseCovariances, poseErrorScale, seed);
+      known.keepFinalGraph
+          ? jointlyPerturbedTrajectory(reference, poseErrorScale, seed)
+          : perturbedTrajectory(reference.result.poses, reference.result.poseCovariances, poseErrorScale, seed);
   MethodRun run = runMethod(logOnTrajectory(log, trajectory), options);
   run.result.method += "@known-trajectory";
   run.evaluation.metrics.method = run.result.method;

@@ -39,6 +39,10 @@ void runSemanticSlam(const MeasurementLog& log, const MethodOptions& options, co
   run.result = slam.result(options.poseCovariances);
   run.result.timeSeconds = secondsSince(start);
   run.factors = slam.smoother().factors().size();
+  if (options.keepFinalGraph) {
+    run.finalGraph = slam.smoother().factors();
+    run.finalEstimate = slam.smoother().estimate();
+  }
   run.evaluation = evaluateRun(log, run.result);
   if (!options.runFolder) return;
   std::vector<AssociationRecord> associations;

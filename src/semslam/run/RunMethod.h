@@ -33,6 +33,8 @@
 
 #include "semslam/eval/HypothesisMetrics.h"
 #include "semslam/eval/RunEvaluation.h"
+#include "semslam/graph/FactorGraph.h"
+#include "semslam/graph/Values.h"
 #include "semslam/hybrid/HybridOptions.h"
 #include "semslam/hybrid/HybridRun.h"
 #include "semslam/io/RunFolder.h"
@@ -51,6 +53,7 @@ struct MethodOptions {
   HybridOptions hybrid;                  ///< paper A's methods (`useSemantics` is set from the method)
   bool poseCovariances = true;           ///< paper B: the marginal covariance of every pose (NEES, ellipses)
   bool runFolder = true;                 ///< build `output` (and, for hybrid, every step's metrics)
+  bool keepFinalGraph = false;           ///< paper B: keep the final factor graph and estimate in the run
 };
 
 struct MethodRun {
@@ -59,6 +62,8 @@ struct MethodRun {
   RunEvaluation evaluation;  ///< scored against the log's truth
   RunOutput output;          ///< the run folder's contents (when options.runFolder)
   std::size_t factors = 0;   ///< paper B: factors in the final graph
+  FactorGraph finalGraph;    ///< paper B, with options.keepFinalGraph: the smoother's factors at the end
+  Values finalEstimate;      ///< ... and its estimate (every pose k under poseKey(k))
   std::vector<HybridStepReport> hybridReports;      ///< paper A: what the update did at every step
   std::vector<HypothesisMetrics> hybridStepMetrics; ///< paper A: eval's metrics of the belief at every step
   HybridMarginals hybridFinal;                      ///< paper A: what the belief said at the last step

@@ -144,6 +144,24 @@ double NormalEquations::assemble(const Values& values) {
   return chi2;
 }
 
+Vector NormalEquations::transposedJacobianTimes(const std::vector<Vector>& perFactor) const {
+  if (perFactor.size() != linearized_.size()) {
+    throw std::invalid_argument("NormalEquations::transposedJacobianTimes: one vector per factor");
+  }
+  Vector product = Vector::Zero(dimension_);
+  for (std::size_t f = 0; f < linearized_.size(); ++f) {
+    const LinearizedFactor& lin = linearized_[f];
+    if (perFactor[f].size() != lin.whitenedError.size()) {
+      throw std::invalid_argument("NormalEquations::transposedJacobianTimes: a vector of the wrong dimension");
+    }
+    const std::vector<int>& vars = factorVariables_[f];
+    for (std::size_t p = 0; p < vars.size(); ++p) {
+      product.segment(offsets_[vars[p]], dims_[vars[p]]).noalias() += lin.jacobians[p].transpose() * perFactor[f];
+    }
+  }
+  return product;
+}
+
 Values NormalEquations::retract(const Values& values, const Vector& delta) const {
   if (delta.size() != dimension_) throw std::invalid_argument("NormalEquations::retract: wrong step dimension");
   Values result = values;

@@ -37,6 +37,9 @@ class NormalEquations {
   const SparseMatrix& hessian() const { return hessian_; }
   /// g = Jᵀr.
   const Vector& gradient() const { return gradient_; }
+  /// Jᵀv = Σ_f J_fᵀ v_f at the last assemble(), for one vector v_f per factor of its whitened error's dimension (in
+  /// graph order). Throws std::invalid_argument for a wrong count or dimension.
+  Vector transposedJacobianTimes(const std::vector<Vector>& perFactor) const;
   /// Positions of H's diagonal entries in hessian().valuePtr(), in column order (for damping).
   const std::vector<int>& diagonalPositions() const { return diagonalPositions_; }
 

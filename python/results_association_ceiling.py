@@ -1,0 +1,91 @@
+"""docs/results.md section of issue 10's association ceiling under pose errors (docs/association-front-end.md §8);
+used by make_results.py.
+
+mm-nh's front end on MRCLAM Dataset 6 (robots 1-5, 3 classes, 10 % misclassification, label seed 1: the logs of the
+association section) with its poses pinned to the known-DA estimate moved by s times their uncertainty
+(`--on-known-trajectory --pose-error-scale s --pose-error-draw D --seed S`): the joint draw (the whole trajectory
+from the known-DA posterior) at s = 0.5, 1, 2 and the independent one (each pose from its own marginal) at s = 0.5
+and 1, seeds 1-3 each; s = 0 is the ceiling of the association section. Every cell is the mean `da_accuracy_real`
+over the seeds with its range.
+"""
+import concurrent.futures
+import os
+import statistics
+
+from results_commands import read_metrics, run_checked
+
+ROBOTS = [1, 2, 3, 4, 5]
+SEEDS = [1, 2, 3]
+# (draw, scale) columns after the unmoved ceiling
+COLUMNS = [("joint", 0.5), ("joint", 1.0), ("joint", 2.0), ("independent", 0.5), ("independent", 1.0)]
+CONVERT_ARGS = ["--keyframe-period", "1", "--classes", "3", "--misclassification", "0.1"]
+
+
+def spread_cell(values):
+    """Mean of the seeds' figures with their range, `–` when there are none."""
+    if not values:
+        return "–"
+    if len(values) == 1:
+        return f"{values[0]:.3f}"
+    return f"{statistics.fmean(values):.3f} ({min(values):.3f}-{max(values):.3f})"
+
+
+def ceiling_table(results):
+    """Table lines from results[(robot, draw, scale, seed)] = da_accuracy_real, draw None and scale 0 for the
+    unmoved ceiling; a mean row over the robots (of the per-robot means) closes it."""
+    header = ["| robot | unmoved (s = 0) | " + " | ".join(f"{draw}, s = {scale:g}" for draw, scale in COLUMNS) + " |",
+              "|---|---|" + "---|" * len(COLUMNS)]
+    rows, column_means = [], [[] for _ in range(len(COLUMNS) + 1)]
+    for robot in ROBOTS:
+        unmoved = [v for (r, d, s, _), v in results.items() if r == robot and d is None]
+        cells = [spread_cell(unmoved)]
+        if unmoved:
+            column_means[0].append(statistics.fmean(unmoved))
+        for c, (draw, scale) in enumerate(COLUMNS):
+            values = [results[(robot, draw, scale, seed)] for seed in SEEDS if (robot, draw, scale, seed) in results]
+            cells.append(spread_cell(values))
+            if values:
+                column_means[c + 1].append(statistics.fmean(values))
+        rows.append(f"| {robot} | " + " | ".join(cells) + " |")
+    mean_row = "| mean | " + " | ".join(f"{statistics.fmean(m):.3f}" if m else "–" for m in column_means) + " |"
+    return header + rows + [mean_row]
+
+
+def association_ceiling_section(semslam, data, scratch, shown):
+    folder = os.path.join(data, "mrclam", "MRCLAM_Dataset6")
+    lines = ["## The association ceiling under pose errors (issue 10)", ""]
+    if not os.path.isdir(folder):
+        return lines + [f"MRCLAM Dataset 6 is not at {folder}: section skipped.", ""]
+    lines += ["mm-nh's front end with the poses pinned to the known-DA estimate, moved by s times its uncertainty "
+              "(docs/association-front-end.md §8): `joint`, the whole trajectory drawn from the known-DA posterior "
+              "(consecutive poses err together, as an estimate's do); `independent`, each pose from its own "
+              "marginal (consecutive poses err independently). `da_accuracy_real`, mean over seeds 1-3 with the "
+              "range; MRCLAM Dataset 6, whole recordings at 1 s keyframes, 3 classes, 10 % misclassification, "
+              "label seed 1.", ""]
+    logs = {robot: os.path.join(scratch, f"association_ceiling_r{robot}.jsonl") for robot in ROBOTS}
+    tasks = []
+    for robot in ROBOTS:
+        tasks.append((robot, None, 0.0, 1))
+        for draw, scale in COLUMNS:
+            tasks += [(robot, draw, scale, seed) for seed in SEEDS]
+
+    def command(task):
+        robot, draw, scale, seed = task
+        out = os.path.join(scratch, f"association_ceiling_r{robot}_{draw}_{scale:g}_{seed}")
+        extra = [] if draw is None else ["--pose-error-scale", f"{scale:g}", "--pose-error-draw", draw,
+                                         "--seed", str(seed)]
+        return out, [semslam, "run", "--overwrite", "--method", "mm-nh", "--in", logs[robot], "--out", out,
+                     "--no-covariances", "--quiet", "--on-known-trajectory"] + extra
+
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, (os.cpu_count() or 2))) as pool:
+        list(pool.map(lambda robot: run_checked([semslam, "convert", "mrclam", folder, "--out", logs[robot],
+                                                 "--robot", str(robot)] + CONVERT_ARGS), ROBOTS))
+        list(pool.map(lambda task: run_checked(command(task)[1]), tasks))
+    results = {task: read_metrics(command(task)[0])["da_accuracy_real"] for task in tasks}
+    lines += ceiling_table(results) + [""]
+    lines += ["```sh",
+              shown([semslam, "convert", "mrclam", folder, "--out", "rN.jsonl", "--robot", "N"] + CONVERT_ARGS),
+              "build/bin/semslam run --method mm-nh --in rN.jsonl --out DIR --no-covariances --on-known-trajectory "
+              "--pose-error-scale S --pose-error-draw joint|independent --seed SEED",
+              "```", ""]
+    return lines
