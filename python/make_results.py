@@ -341,7 +341,8 @@ def section_lines(name, semslam, data, scratch):
                                                                        lambda command: shown(command, data))
     elif name == "association-ceiling":
         body = results_association_ceiling.association_ceiling_section(semslam, data, scratch,
-                                                                       lambda command: shown(command, data))
+                                                                       lambda command: shown(command, data),
+                                                                       sys.executable)
     elif name == "association-defaults":
         body = results_association_defaults.association_defaults_section(semslam, data, scratch)
     elif name == "loop-closure-branches":

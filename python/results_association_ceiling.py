@@ -9,11 +9,14 @@ and 1, seeds 1-3 each; s = 0 is the ceiling of the association section. Every ce
 over the seeds with its range.
 """
 import concurrent.futures
+import csv
 import os
 import statistics
+import sys
 
 from results_commands import read_metrics, run_checked
 
+HERE = os.path.dirname(os.path.abspath(__file__))
 ROBOTS = [1, 2, 3, 4, 5]
 SEEDS = [1, 2, 3]
 # (draw, scale) columns after the unmoved ceiling
@@ -51,7 +54,20 @@ def ceiling_table(results):
     return header + rows + [mean_row]
 
 
-def association_ceiling_section(semslam, data, scratch, shown):
+def write_csv(results, path):
+    """results[(robot, draw, scale, seed)] as the CSV that plot_association_ceiling.py reads."""
+    with open(path, "w", newline="") as handle:
+        writer = csv.writer(handle)
+        writer.writerow(["robot", "draw", "scale", "seed", "da_accuracy_real"])
+        def order(item):
+            robot, draw, scale, seed = item[0]
+            return robot, draw or "", scale, seed
+
+        for (robot, draw, scale, seed), value in sorted(results.items(), key=order):
+            writer.writerow([robot, draw or "", f"{scale:g}", seed, repr(value)])
+
+
+def association_ceiling_section(semslam, data, scratch, shown, python=None):
     folder = os.path.join(data, "mrclam", "MRCLAM_Dataset6")
     lines = ["## The association ceiling under pose errors (issue 10)", ""]
     if not os.path.isdir(folder):
@@ -83,6 +99,15 @@ def association_ceiling_section(semslam, data, scratch, shown):
         list(pool.map(lambda task: run_checked(command(task)[1]), tasks))
     results = {task: read_metrics(command(task)[0])["da_accuracy_real"] for task in tasks}
     lines += ceiling_table(results) + [""]
+    table = os.path.join(scratch, "association_ceiling.csv")
+    write_csv(results, table)
+    figures = os.path.join("docs", "figures")
+    os.makedirs(figures, exist_ok=True)
+    figure = os.path.join(figures, "association_ceiling.png")
+    run_checked([python or sys.executable, os.path.join(HERE, "plot_association_ceiling.py"), table, figure])
+    lines += [f"![association ceiling under pose errors]({os.path.relpath(figure, 'docs')})", "",
+              "`python3 python/plot_association_ceiling.py CEILING.csv OUT.png` (columns robot, draw, scale, seed, "
+              "da_accuracy_real).", ""]
     lines += ["```sh",
               shown([semslam, "convert", "mrclam", folder, "--out", "rN.jsonl", "--robot", "N"] + CONVERT_ARGS),
               "build/bin/semslam run --method mm-nh --in rN.jsonl --out DIR --no-covariances --on-known-trajectory "

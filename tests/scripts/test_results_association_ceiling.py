@@ -40,6 +40,34 @@ class CeilingTable(unittest.TestCase):
         self.assertEqual(mean[1], "0.930")  # (0.91 + 0.92 + 0.93 + 0.94 + 0.95) / 5
         self.assertEqual(mean[4], "0.720")  # joint s = 2 over the four robots that have it
 
+    def test_the_csv_is_what_the_plot_reads(self):
+        import subprocess
+        import tempfile
+        with tempfile.TemporaryDirectory() as folder:
+            table = os.path.join(folder, "ceiling.csv")
+            section.write_csv(self.results(), table)
+            with open(table) as handle:
+                lines = handle.read().splitlines()
+            self.assertEqual(lines[0], "robot,draw,scale,seed,da_accuracy_real")
+            self.assertEqual(lines[1], "1,,0,1,0.91")  # the unmoved ceiling first
+            self.assertEqual(len(lines), 1 + len(section.ROBOTS) * (1 + len(section.COLUMNS) * len(section.SEEDS)))
+            plot = os.path.join(os.path.dirname(section.__file__), "plot_association_ceiling.py")
+            try:
+                import matplotlib  # noqa: F401
+            except ImportError:
+                self.skipTest("python3-matplotlib is not installed: the plot is not drawn")
+            figure = os.path.join(folder, "ceiling.png")
+            subprocess.run([sys.executable, plot, table, figure], check=True)
+            self.assertGreater(os.path.getsize(figure), 1000)
+            sys.path.insert(0, os.path.dirname(plot))
+            import plot_association_ceiling
+            curves = plot_association_ceiling.read_curves(table)
+            self.assertEqual(sorted(curves), ["independent", "joint"])
+            # robot 1's joint curve: the unmoved ceiling at s = 0, then the three joint scales' seed means
+            self.assertEqual([s for s, _ in curves["joint"][1]], [0.0, 0.5, 1.0, 2.0])
+            self.assertAlmostEqual(curves["joint"][1][0][1], 0.91)
+            self.assertAlmostEqual(curves["joint"][1][2][1], 0.62)
+
 
 if __name__ == "__main__":
     unittest.main()
