@@ -56,13 +56,13 @@ def ceiling_table(results):
 
 def write_csv(results, path):
     """results[(robot, draw, scale, seed)] as the CSV that plot_association_ceiling.py reads."""
+    def order(item):  # robot, then the unmoved ceiling (draw None) first, scale, seed
+        robot, draw, scale, seed = item[0]
+        return robot, draw or "", scale, seed
+
     with open(path, "w", newline="") as handle:
         writer = csv.writer(handle)
         writer.writerow(["robot", "draw", "scale", "seed", "da_accuracy_real"])
-        def order(item):
-            robot, draw, scale, seed = item[0]
-            return robot, draw or "", scale, seed
-
         for (robot, draw, scale, seed), value in sorted(results.items(), key=order):
             writer.writerow([robot, draw or "", f"{scale:g}", seed, repr(value)])
 
