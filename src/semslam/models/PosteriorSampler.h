@@ -15,38 +15,35 @@
 // are the ones its estimate has, where independent draws from each pose's marginal give consecutive poses
 // independent errors (relative errors of √2 σ_marginal, the whole drift's uncertainty at every step).
 //
-// Cost: H is assembled and factorised once (sparse Cholesky); each draw is one Jᵀv and one solve.
+// Cost: H is assembled and factorised once (solve/Marginals.h, which applies H⁻¹Jᵀ); each draw is one Jᵀv and one
+// solve.
 // Invariants: the same graph, optimum, scale and engine state give the same draw, bit for bit; a draw consumes
 // m standardNormal values (models/Sampling.h). Robust kernels and max-mixtures enter as they linearise at X̂.
 
 #include <random>
 
+#include <vector>
+
 #include "semslam/graph/FactorGraph.h"
 #include "semslam/graph/Values.h"
-#include "semslam/solve/NormalEquations.h"
-#include "semslam/solve/SparseCholesky.h"
+#include "semslam/solve/Marginals.h"
 
 namespace semslam {
 
 class PosteriorSampler {
  public:
-  /// Linearises `graph` at `optimum` and factorises H. Throws std::invalid_argument for a graph without factors,
-  /// UnconstrainedSystemError (solve/UnconstrainedSystem.h) when H is not positive definite.
+  /// Linearises `graph` at `optimum` and factorises H (Marginals). Throws std::invalid_argument for a graph without
+  /// factors, UnconstrainedSystemError (solve/UnconstrainedSystem.h) when H is not positive definite.
   PosteriorSampler(const FactorGraph& graph, const Values& optimum);
 
   /// X̂ ⊕ scale · δ for one draw of δ (above); variables that no factor names are copied unchanged. Throws
   /// std::invalid_argument for a negative or non-finite scale.
   Values draw(double scale, std::mt19937& rng) const;
 
-  /// Entries of the stacked whitened error (m): standard normals per draw.
-  int errorDimension() const { return errorDimension_; }
-
  private:
-  FactorGraph graph_;
   Values optimum_;
-  NormalEquations system_;
-  SparseCholesky cholesky_;
-  int errorDimension_ = 0;
+  Marginals marginals_;
+  std::vector<int> errorDimensions_;  // of each factor's whitened error, in graph order
 };
 
 }  // namespace semslam

@@ -889,10 +889,9 @@ void SemanticSlam::mergeDuplicateLandmarks(const std::vector<bool>& seen, std::v
     if (distance > range) return false;
     const std::vector<int>& distinct = landmarks_[p].distinctFrom;
     if (std::find(distinct.begin(), distinct.end(), l) != distinct.end()) return false;
+    // No bound for a landmark the pre-selection does not track yet (born at this step), nor without pre-selection.
     const std::optional<double> spreadP = preselection_.spread(p), spreadL = preselection_.spread(l);
-    if (options_.candidatePreselection && spreadP && spreadL && distance > gateRadius * (*spreadP + *spreadL)) {
-      return false;
-    }
+    if (spreadP && spreadL && distance > gateRadius * (*spreadP + *spreadL)) return false;
     const std::vector<int> stepsOfL = stepsOn(l);
     std::vector<int> shared;
     std::set_intersection(stepsOfP.begin(), stepsOfP.end(), stepsOfL.begin(), stepsOfL.end(),

@@ -27,6 +27,10 @@ Marginals::Marginals(const FactorGraph& graph, const Values& linearizationPoint)
   }
 }
 
+Vector Marginals::posteriorOffset(const std::vector<Vector>& perFactor) const {
+  return cholesky_.solve(system_.transposedJacobianTimes(perFactor));
+}
+
 Matrix Marginals::marginalCovariance(Key key) const { return jointMarginal({key}).covariance(); }
 
 JointMarginal Marginals::jointMarginal(const std::vector<Key>& keys) const {

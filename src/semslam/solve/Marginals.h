@@ -26,6 +26,12 @@ class Marginals {
   Matrix marginalCovariance(Key key) const;
   /// Joint covariance of `keys`, in that order (a key may not repeat).
   JointMarginal jointMarginal(const std::vector<Key>& keys) const;
+  /// H⁻¹ Jᵀ v for one vector v_f per factor of its whitened error's dimension, in graph order (J: the whitened
+  /// Jacobians at the linearization point). With v ~ N(0, I) it is an exact draw from N(0, H⁻¹), the posterior's
+  /// tangent offset (models/PosteriorSampler.h draws v).
+  Vector posteriorOffset(const std::vector<Vector>& perFactor) const;
+  /// values ⊕ delta over the system's variables, in its layout (NormalEquations::retract).
+  Values retract(const Values& values, const Vector& delta) const { return system_.retract(values, delta); }
   /// Heap bytes held: the linearized system and its Cholesky factor.
   std::size_t memoryBytes() const { return system_.memoryBytes() + cholesky_.memoryBytes(); }
 
