@@ -39,6 +39,9 @@ void addRunMethodOptions(CLI::App* command, RunMethodArguments& arguments) {
                       "as the estimate's) or independent (each pose from its own marginal)")
       ->check(CLI::IsMember({"joint", "independent"}))
       ->capture_default_str();
+  command->add_flag("--on-true-history", arguments.onTrueHistory,
+                    "paper B's methods but known: the graph holds the true associations and the front end's own "
+                    "decision on each detection is scored (the causal ceiling, docs/association-front-end.md §8b)");
   command->add_option("--seed", arguments.options.hybrid.seed,
                       "hybrid: seed of the Monte Carlo draws; --pose-error-scale: seed of the pose errors")
       ->check(unsignedInteger64())
@@ -52,7 +55,11 @@ MethodRun runFromArguments(const MeasurementLog& log, RunMethodArguments argumen
   options.method = parseMethod(arguments.method);
   if (!arguments.smoother.empty()) options.smoother = parseSmootherKind(arguments.smoother);
   options.poseCovariances = !arguments.noCovariances;
+  options.slam.decideOnTrueHistory = arguments.onTrueHistory;
   try {
+    if (arguments.onKnownTrajectory && arguments.onTrueHistory) {
+      throw std::invalid_argument("--on-known-trajectory and --on-true-history are two ceilings: choose one");
+    }
     if (arguments.onKnownTrajectory) {
       const PoseErrorDraw draw =
           arguments.poseErrorDraw == "independent" ? PoseErrorDraw::Independent : PoseErrorDraw::Joint;

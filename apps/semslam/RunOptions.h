@@ -5,7 +5,7 @@
 // means the same thing, with the same checks and defaults, in the shell and in Python.
 //
 //   --method, --smoother, paper B's options (MethodOptions.h: addSemanticSlamOptions), --no-covariances,
-//   --on-known-trajectory, --pose-error-scale, --seed, paper A's options (addHybridOptions)
+//   --on-known-trajectory, --pose-error-scale, --on-true-history, --seed, paper A's options (addHybridOptions)
 //
 // The input and output (--in, --out, --overwrite) and the progress line (--quiet) stay the run command's own.
 
@@ -21,6 +21,7 @@ struct RunMethodArguments {
   std::string smoother;  // empty: the method's default (incremental for paper B, batch LM for the hybrid belief)
   bool noCovariances = false;
   bool onKnownTrajectory = false;
+  bool onTrueHistory = false;
   double poseErrorScale = 0.0;
   std::string poseErrorDraw = "joint";
   MethodOptions options;

@@ -123,6 +123,42 @@ TEST(RunCommand, MaxMixtureMethodsWriteTheRunFolderAndMetrics) {
   fs::remove_all(dir);
 }
 
+TEST(RunCommand, OnTrueHistoryScoresTheFrontEndsDecisionsOnKnownsGraph) {
+  const fs::path dir = freshDirectory("semslam_run_true_history");
+  const fs::path log = dir / "run.jsonl";
+  ASSERT_EQ(runSemslam("simulate semantic --steps 30 --seed 4 --out \"" + log.string() + "\"").exitCode, 0);
+  const std::string in = " --in \"" + log.string() + "\" --no-covariances --out \"";
+  ASSERT_EQ(runSemslam("run --method known" + in + (dir / "known").string() + "\"").exitCode, 0);
+  const auto result = runSemslam("run --method mm-nh --on-true-history" + in + (dir / "decided").string() + "\"");
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  std::ifstream metricsFile(dir / "decided" / "metrics.json");
+  const nlohmann::json metrics = nlohmann::json::parse(metricsFile);
+  EXPECT_EQ(metrics["method"], "mm-nh@true-history");
+  EXPECT_GT(metrics["decision_accuracy_real"].get<double>(), 0.5);
+  EXPECT_LE(metrics["decision_accuracy_real"].get<double>(), 1.0);
+  EXPECT_TRUE(metrics["decisions_resighting_elsewhere"].is_number_integer());
+  EXPECT_EQ(metrics["da_accuracy_real"].get<double>(), 1.0);  // the graph holds the true associations
+  // The graph is known's: the same associations, row for row (the residuals, at estimates reached by another
+  // sequence of updates, agree to round-off only).
+  const auto withoutResiduals = [](const fs::path& file) {
+    std::ifstream in(file);
+    std::string rows, line;
+    while (std::getline(in, line)) rows += line.substr(0, line.rfind(',')) + "\n";
+    return rows;
+  };
+  EXPECT_EQ(withoutResiduals(dir / "decided" / "associations.csv"), withoutResiduals(dir / "known" / "associations.csv"));
+  // A run that decides for itself reports no decision metrics.
+  std::ifstream knownMetrics(dir / "known" / "metrics.json");
+  EXPECT_TRUE(nlohmann::json::parse(knownMetrics)["decision_accuracy_real"].is_null());
+  // Refused with exit 2: nothing to decide (known, the hybrid belief), or two ceilings at once.
+  for (const std::string refused : {"--method known --on-true-history", "--method hybrid --on-true-history",
+                                    "--method mm-nh --on-true-history --on-known-trajectory",
+                                    "--method mm-nh --on-true-history --birth threshold"}) {
+    EXPECT_EQ(runSemslam("run " + refused + in + (dir / "refused").string() + "\"").exitCode, 2) << refused;
+  }
+  fs::remove_all(dir);
+}
+
 TEST(RunCommand, TheConfirmationSpacingReachesTheProvisionalLandmarkRule) {
   // A spacing no run can meet (1000 s in a 30-step log of 1 s steps) confirms nothing: finish() drops every
   // provisional landmark, so the map is empty; the default confirms the simulated landmarks.

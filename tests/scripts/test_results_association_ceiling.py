@@ -71,3 +71,41 @@ class CeilingTable(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class TrueHistoryTable(unittest.TestCase):
+    def runs(self):
+        decided, own = {}, {}
+        for robot in section.ROBOTS:
+            for seed in section.LABEL_SEEDS:
+                decided[(robot, seed)] = {"decision_accuracy_real": 0.9 + 0.01 * seed,
+                                          "decision_clutter_rejected": 0.95,
+                                          "decisions_resighting_elsewhere": robot,
+                                          "decisions_resighting_unassigned": 2,
+                                          "decisions_first_sighting_forced": seed}
+                own[(robot, seed)] = 0.5 + 0.1 * robot
+        return decided, own
+
+    def test_cells_are_means_with_ranges_and_error_counts_are_summed_over_the_seeds(self):
+        decided, own = self.runs()
+        lines = section.true_history_table(decided, own)
+        self.assertEqual(len(lines), 2 + len(section.ROBOTS) + 1)
+        row = lines[3].split(" | ")  # robot 2
+        self.assertEqual(row[0], "| 2")
+        self.assertEqual(row[1], "0.920 (0.910-0.930)")
+        self.assertEqual(row[2], "0.700 (0.700-0.700)")
+        self.assertEqual(row[3], "6")  # elsewhere: robot 2 on each of 3 seeds
+        self.assertEqual(row[4], "6")  # unassigned: 2 on each
+        self.assertEqual(row[5], "6")  # forced: 1 + 2 + 3
+        self.assertEqual(row[6], "0.950 (0.950-0.950) |")
+        mean = lines[-1].split(" | ")
+        self.assertEqual(mean[1], "0.920")
+        self.assertEqual(mean[2], "0.800")  # (0.6 + 0.7 + 0.8 + 0.9 + 1.0) / 5
+
+    def test_a_robot_without_runs_is_a_dash(self):
+        decided, own = self.runs()
+        for seed in section.LABEL_SEEDS:
+            del decided[(4, seed)]
+            del own[(4, seed)]
+        lines = section.true_history_table(decided, own)
+        self.assertTrue(lines[5].startswith("| 4 | – | – | – | – | – | – |"))

@@ -63,6 +63,14 @@ void setAssociationErrorMetrics(RunMetrics& metrics, const AssociationErrors& er
   metrics.landmarksSplit = asCount(errors.landmarksSplit);
 }
 
+void setDecisionMetrics(RunMetrics& metrics, const DecisionAccuracy& decisions) {
+  metrics.decisionAccuracyReal = decisions.accuracyReal;
+  metrics.decisionClutterRejected = decisions.clutterRejectedFraction;
+  metrics.decisionsResightingElsewhere = asCount(decisions.resightingsElsewhere);
+  metrics.decisionsResightingUnassigned = asCount(decisions.resightingsUnassigned);
+  metrics.decisionsFirstSightingForced = asCount(decisions.firstSightingsForced);
+}
+
 void setLandmarkMetrics(RunMetrics& metrics, const LandmarkMetrics& landmarks) {
   metrics.landmarksEstimated = asCount(landmarks.estimated);
   metrics.landmarksTrue = asCount(landmarks.truth);
@@ -168,6 +176,30 @@ RunEvaluation evaluateRun(const MeasurementLog& log, const RunResult& result, co
       setDataAssociationMetrics(metrics, *evaluation.dataAssociation);
       evaluation.associationErrors = evaluateAssociationErrors(pairs, evaluation.dataAssociation->matching);
       setAssociationErrorMetrics(metrics, *evaluation.associationErrors);
+    }
+  }
+
+  if (!result.historyDecisions.empty()) {
+    if (result.historyDecisions.size() != steps) {
+      throw InputError("run evaluation: the log has " + std::to_string(steps) + " steps but the run decided " +
+                       std::to_string(result.historyDecisions.size()));
+    }
+    std::vector<ScoredDecision> scored;
+    for (std::size_t i = 0; i < steps; ++i) {
+      const std::vector<Detection>& detections = log.steps[i].detections;
+      if (result.historyDecisions[i].size() != detections.size()) {
+        throw InputError("run evaluation: step " + std::to_string(i) + " has " + std::to_string(detections.size()) +
+                         " detections but " + std::to_string(result.historyDecisions[i].size()) + " decisions");
+      }
+      for (std::size_t j = 0; j < detections.size(); ++j) {
+        if (const std::optional<int> truth = scoredTruth(detections[j].truthId)) {
+          scored.push_back({*truth, result.historyDecisions[i][j]});
+        }
+      }
+    }
+    if (!scored.empty()) {
+      evaluation.decisions = evaluateDecisions(scored);
+      setDecisionMetrics(metrics, *evaluation.decisions);
     }
   }
 

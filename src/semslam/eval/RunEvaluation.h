@@ -30,6 +30,7 @@
 
 #include "semslam/eval/AssociationErrors.h"
 #include "semslam/eval/DataAssociationAccuracy.h"
+#include "semslam/eval/DecisionAccuracy.h"
 #include "semslam/eval/HypothesisMetrics.h"
 #include "semslam/eval/LandmarkMetrics.h"
 #include "semslam/eval/Nees.h"
@@ -52,6 +53,7 @@ struct RunEvaluation {
   std::optional<TrajectoryErrors> trajectory;
   std::optional<DataAssociationAccuracy> dataAssociation;
   std::optional<AssociationErrors> associationErrors;
+  std::optional<DecisionAccuracy> decisions;  ///< runs with decisions on the true history only
   std::optional<LandmarkMetrics> landmarks;
   std::optional<NeesSummary> nees;
   std::optional<HypothesisMetrics> hypotheses;

@@ -37,6 +37,9 @@ struct RunMetrics {
   double clutterRejected = kNotApplicable;
   double clutterRejectedMoving = kNotApplicable, clutterRejectedFalsePositive = kNotApplicable;
   std::optional<long long> landmarksMerged, landmarksSplit;
+  // Decisions on the true history (DecisionAccuracy.h): runs with SemanticSlamOptions::decideOnTrueHistory only.
+  double decisionAccuracyReal = kNotApplicable, decisionClutterRejected = kNotApplicable;
+  std::optional<long long> decisionsResightingElsewhere, decisionsResightingUnassigned, decisionsFirstSightingForced;
 
   // Landmarks (LandmarkMetrics.h).
   std::optional<long long> landmarksEstimated, landmarksTrue, landmarkCountError, landmarksMatched;

@@ -34,12 +34,22 @@ struct AssociationRecord {
   std::optional<double> chi2;
 };
 
+/// One decision of paper B's front end taken on the true history (SemanticSlamOptions::decideOnTrueHistory): the
+/// landmark it decided and the landmark the true history had for the detection's object at that step. nullopt is
+/// "unassigned" in `decided` and "clutter, or an object not mapped before the step" in `right`, so a decision is
+/// right exactly when the two are equal.
+struct HistoryDecision {
+  std::optional<int> decided;
+  std::optional<int> right;
+};
+
 /// What a method reports at the end of a run. Leave a member empty when the method does not produce it.
 struct RunResult {
   std::string method;
   std::vector<Pose> poses;                                     ///< final estimate of each step's pose
   std::vector<Matrix> poseCovariances;                         ///< marginal covariance of each pose (tangent)
   std::vector<std::vector<std::optional<int>>> associations;   ///< [step][detection]: landmark id or null hypothesis
+  std::vector<std::vector<HistoryDecision>> historyDecisions;  ///< [step][detection]: decisions on the true history
   std::vector<EstimatedLandmark> landmarks;
   std::vector<HypothesisComponent> components;                 ///< hybrid belief at the last step
   std::vector<double> heaviestAssociationWeights;              ///< hybrid: max_β P(β | H_k), one per step

@@ -46,9 +46,10 @@ void runSemanticSlam(const MeasurementLog& log, const MethodOptions& options, co
   run.evaluation = evaluateRun(log, run.result);
   if (!options.runFolder) return;
   std::vector<AssociationRecord> associations;
+  const bool graphFollowsTruth = slamOptions.strategy == AssociationStrategy::Known || slamOptions.decideOnTrueHistory;
   for (const DetectionRecord& record : slam.detections()) {
     const auto [landmark, weight] = slam.chosenAssociation(record);
-    if (slamOptions.strategy == AssociationStrategy::Known && !landmark) continue;  // clutter: no factor
+    if (graphFollowsTruth && !landmark) continue;  // clutter: no factor
     associations.push_back({record.step, record.detection, landmark, weight, record.truth, slam.residualChi2(record)});
   }
   run.output = runOutputFrom(log, run.result, std::move(associations));
@@ -119,6 +120,10 @@ MethodRun runMethod(const MeasurementLog& log, const MethodOptions& options, con
       throw std::invalid_argument("switch rounds apply to the incremental back end: the batch back end re-chooses "
                                   "every mixture at every Gauss-Newton iterate");
     }
+  }
+  if (options.slam.decideOnTrueHistory && (isHybrid(options.method) || options.method == Method::Known)) {
+    throw std::invalid_argument("decisions on the true history are paper B's front end's: " +
+                                methodName(options.method) + " takes none");
   }
   if (options.slam.nullEscapeWindow != 0.0 && !options.slam.nullEscape) {  // (mm-nh's, like its other options)
     throw std::invalid_argument("the null escape window widens the null escape, which --no-null-escape turns off");

@@ -21,7 +21,7 @@ const char* LoopClosureBranches::branchName(Branch branch) {
 }
 
 int LoopClosureBranches::window(const SemanticSlamOptions& options) {
-  const bool applies = options.birth == BirthRule::Unassigned &&
+  const bool applies = options.birth == BirthRule::Unassigned && !options.decideOnTrueHistory &&
                        (options.strategy == AssociationStrategy::MaximumLikelihood ||
                         options.strategy == AssociationStrategy::MaxMixture ||
                         options.strategy == AssociationStrategy::MaxMixtureNullHypothesis);
@@ -31,7 +31,8 @@ int LoopClosureBranches::window(const SemanticSlamOptions& options) {
     if (window < 0) throw std::invalid_argument("loop-closure branch window must be >= 0");
     if (window > 0 && !applies) {
       throw std::invalid_argument("loop-closure branches need the unassigned birth rule and the ml, mm or mm-nh "
-                                  "strategy (known assigns nothing; gpda's factors carry EM weights)");
+                                  "strategy (known assigns nothing; gpda's factors carry EM weights), applying its "
+                                  "own decisions (not on the true history)");
     }
   }
   if (options.loopClosureNextBest.value_or(false) && window == 0) {

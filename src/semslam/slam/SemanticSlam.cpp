@@ -92,6 +92,11 @@ SemanticSlam::SemanticSlam(const LogHeader& header, SemanticSlamOptions options)
   if (!(options_.nullEscapeWindow >= 0.0 && std::isfinite(options_.nullEscapeWindow))) {
     throw std::invalid_argument("null escape window must be a finite number of seconds >= 0");
   }
+  if (options_.decideOnTrueHistory &&
+      (options_.strategy == AssociationStrategy::Known || options_.birth != BirthRule::Unassigned)) {
+    throw std::invalid_argument("decisions on the true history need a strategy that decides (not known) and the "
+                                "unassigned birth rule, whose joint assignment is the decision");
+  }
 }
 
 int SemanticSlam::addLandmark(const Value& value, std::optional<int> truthId, Values& values,
@@ -154,8 +159,8 @@ void SemanticSlam::beginStep(const TimeStep& step) {
   }
   poseKeys_.push_back(pose);
   firstRecordOfStep_.push_back(records_.size());
-  const bool known = options_.strategy == AssociationStrategy::Known;
-  if (!step.detections.empty() && !known && !landmarks_.empty()) {
+  const bool decides = options_.strategy != AssociationStrategy::Known;  // (decideOnTrueHistory included)
+  if (!step.detections.empty() && decides && !landmarks_.empty()) {
     // The candidates' weights need the marginal of the propagated pose: solve before associating. (Otherwise
     // propagation and association share one solve.)
     smoother_->update(propagation, newValues);
@@ -168,7 +173,7 @@ void SemanticSlam::beginStep(const TimeStep& step) {
   // created during this step are not among them.
   std::optional<JointMarginal> marginal;
   std::vector<int> considered;
-  if (!known && !landmarks_.empty() && !step.detections.empty()) {
+  if (decides && !landmarks_.empty() && !step.detections.empty()) {
     const auto active = [this](int j) { return lifecycle_.active(j); };  // not dropped or merged (§5)
     if (options_.candidatePreselection) {
       considered = preselection_.select(*smoother_, pose, step.detections, options_.birth == BirthRule::Unassigned,
@@ -200,19 +205,40 @@ void SemanticSlam::beginStep(const TimeStep& step) {
     record.semanticLikelihoods = semanticLikelihoods(header_, step.detections[i]);
     records_.push_back(std::move(record));
   }
-  if (jointlyAssigned()) {
+  if (jointlyAssigned() || options_.decideOnTrueHistory) {
     // (docs/association-front-end.md, §1-4): every candidate of the step against the marginal from before it,
-    // then one joint assignment with the unassigned hypothesis (applied by completeStep).
+    // then one joint assignment with the unassigned hypothesis (applied by completeStep, or only recorded).
     for (const Detection& detection : step.detections) unassigned_.observe(detection);
     for (std::size_t r = pending.first; r < records_.size(); ++r) {
       findCandidatesWithUnassigned(pending.marginal ? &*pending.marginal : nullptr, pending.considered, records_[r]);
     }
     pending.assignedLandmark = jointAssignment(pending.first);
+    if (options_.decideOnTrueHistory) recordDecisions(pending.first, pending.assignedLandmark);
+  }
+}
+
+void SemanticSlam::recordDecisions(std::size_t first, const std::vector<int>& decided) {
+  for (std::size_t r = first; r < records_.size(); ++r) {
+    DetectionRecord& record = records_[r];
+    const int landmark = decided[r - first];
+    if (landmark >= 0) record.decided = landmark;
+    if (scoredTruth(record.truth) && *record.truth != kNotALandmark) {
+      const auto found = landmarkOfTruthId_.find(*record.truth);
+      if (found != landmarkOfTruthId_.end()) record.rightDecision = found->second;
+    }
+    // The graph takes the true association (completeStep, as `known`): nothing of the decision stays in the record.
+    record.candidates.clear();
+    record.weights.clear();
+    record.logLikelihoods.clear();
   }
 }
 
 bool SemanticSlam::jointlyAssigned() const {
-  return options_.strategy != AssociationStrategy::Known && options_.birth == BirthRule::Unassigned;
+  return !graphFollowsTruth() && options_.birth == BirthRule::Unassigned;
+}
+
+bool SemanticSlam::graphFollowsTruth() const {
+  return options_.strategy == AssociationStrategy::Known || options_.decideOnTrueHistory;
 }
 
 void SemanticSlam::completeStep() {
@@ -221,7 +247,7 @@ void SemanticSlam::completeStep() {
   pending_.reset();
   const int k = steps() - 1;
   const Key pose = poseKeys_.back();
-  const bool known = options_.strategy == AssociationStrategy::Known;
+  const bool known = graphFollowsTruth();
   const bool jointly = jointlyAssigned();
   const std::optional<JointMarginal>& marginal = pending.marginal;
   const std::vector<int>& considered = pending.considered;
@@ -322,7 +348,7 @@ void SemanticSlam::completeStep() {
     switched = true;
   }
   if (switched) smoother_->update();
-  if (options_.strategy == AssociationStrategy::Gpda && options_.emIterations > 0) {
+  if (options_.strategy == AssociationStrategy::Gpda && !graphFollowsTruth() && options_.emIterations > 0) {
     const int firstStep = std::max(0, k + 1 - options_.emWindow);
     expectationMaximization(firstRecordOfStep_[firstStep], options_.emIterations);
   }
@@ -1121,7 +1147,7 @@ void SemanticSlam::finish() {
     }
     applyEdits(std::move(touched), {});
   }
-  if (options_.strategy == AssociationStrategy::Gpda) expectationMaximization(0, 10);
+  if (options_.strategy == AssociationStrategy::Gpda && !graphFollowsTruth()) expectationMaximization(0, 10);
   smoother_->converge();
   if (options_.birth == BirthRule::Unassigned) {
     while (repairExclusion(0, records_.size())) smoother_->converge();  // (§4) at the final estimate
@@ -1168,6 +1194,7 @@ RunResult SemanticSlam::result(bool withPoseCovariances) const {
   RunResult result;
   result.method = strategyName(options_.strategy);
   if (options_.birth == BirthRule::Threshold) result.method += "+threshold";  // paper B's own birth rule
+  if (options_.decideOnTrueHistory) result.method += "@true-history";
   const Values& estimate = smoother_->estimate();
   for (Key pose : poseKeys_) {
     result.poses.push_back(toPose(estimate.value(pose)));
@@ -1178,6 +1205,12 @@ RunResult SemanticSlam::result(bool withPoseCovariances) const {
     const std::size_t end = k + 1 < poseKeys_.size() ? firstRecordOfStep_[k + 1] : records_.size();
     for (std::size_t r = firstRecordOfStep_[k]; r < end; ++r) {
       result.associations[k].push_back(chosenAssociation(records_[r]).first);
+    }
+  }
+  if (options_.decideOnTrueHistory) {
+    result.historyDecisions.resize(poseKeys_.size());
+    for (const DetectionRecord& record : records_) {
+      result.historyDecisions[static_cast<std::size_t>(record.step)].push_back({record.decided, record.rightDecision});
     }
   }
   for (int j = 0; j < landmarks(); ++j) {

@@ -58,6 +58,9 @@
 //      says the estimate lags, as two do; after a long gap a lone detection stays what the null hypothesis is for.
 // Decisions where paper B is silent are in docs/max-mixtures.md.
 //
+// With decideOnTrueHistory (the causal ceiling, docs/association-front-end.md §8b) the graph is `known`'s and steps
+// 1-2 run only to record the front end's decision on each detection (DetectionRecord::decided), never applied.
+//
 // A step is processed in two halves, beginStep (steps 1-2, the joint assignment found but not applied) and
 // completeStep (the rest), so that a run can be forked between them with a different decision on the step's
 // anchoring pairings (keepApart, pairElsewhere): LoopClosureBranches.h keeps two or three such branches and the
@@ -139,6 +142,13 @@ struct SemanticSlamOptions {
   /// (LoopClosureBranches.h); 1: one split at a time, an anchoring step during an open split decided as without
   /// branches. Unset: LoopClosureBranches::kDefaultOpenSplits where branches apply, 1 elsewhere.
   std::optional<int> loopClosureOpenSplits;
+  /// The causal ceiling (docs/association-front-end.md §8b): the graph holds the true associations, as `known`'s
+  /// does (a landmark per true object, clutter on none), and at every step the strategy's front end first decides
+  /// the step's detections against that state (steps 1-2 under BirthRule::Unassigned: candidates, the joint gate,
+  /// the unassigned hypothesis, the joint assignment). Each decision is recorded (DetectionRecord::decided) and
+  /// never applied, so every decision is taken on a history with no error in it. Needs BirthRule::Unassigned and a
+  /// strategy other than known; no branches, lifecycle or null escape (nothing the front end decides is applied).
+  bool decideOnTrueHistory = false;
 };
 
 /// What became of one detection.
@@ -158,6 +168,11 @@ struct DetectionRecord {
   double unassignedLogLikelihood = 0.0; ///< BirthRule::Unassigned: ln p(z | unassigned)
   std::optional<int> assigned;          ///< BirthRule::Unassigned: the joint assignment's landmark (none: new)
   bool rejected = false;                ///< the provisional landmark it started was dropped: it is on no landmark
+  /// SemanticSlamOptions::decideOnTrueHistory: what the front end decided (the joint assignment's landmark;
+  /// nullopt: unassigned) and the landmark the true history had for the detection's object then (nullopt: clutter,
+  /// or an object not mapped before this step: unassigned is the right decision).
+  std::optional<int> decided;
+  std::optional<int> rightDecision;
 };
 
 class SemanticSlam {
@@ -264,8 +279,14 @@ class SemanticSlam {
   /// (docs/association-front-end.md, §1-3).
   void findCandidatesWithUnassigned(const JointMarginal* marginal, const std::vector<int>& considered,
                                     DetectionRecord& record) const;
-  /// Whether the step's detections are assigned jointly (§1-4): BirthRule::Unassigned, not `known`.
+  /// Whether the step's detections are assigned jointly (§1-4): BirthRule::Unassigned, not `known`, and the
+  /// assignment applied (not decideOnTrueHistory).
   bool jointlyAssigned() const;
+  /// Whether the graph holds the true associations: `known`, or decideOnTrueHistory.
+  bool graphFollowsTruth() const;
+  /// decideOnTrueHistory: the front end's decisions on the begun step (steps 1-2, from `first`), recorded with the
+  /// right one beside each, not applied.
+  void recordDecisions(std::size_t first, const std::vector<int>& decided);
   /// BirthRule::Unassigned: the landmark each of the step's records (from `first`) is assigned, jointly, one
   /// detection per landmark (§4); −1: unassigned.
   std::vector<int> jointAssignment(std::size_t first) const;
