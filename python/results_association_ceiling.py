@@ -8,7 +8,7 @@ from the known-DA posterior) at s = 0.5, 1, 2 and the independent one (each pose
 and 1, seeds 1-3 each; s = 0 is the ceiling of the association section. Every cell is the mean `da_accuracy_real`
 over the seeds with its range.
 
-Beside it, the causal ceiling (docs/association-front-end.md §8b): mm-nh's front end deciding each detection on the
+Beside it, decisions on the true history (docs/association-front-end.md §8b): mm-nh's front end deciding each detection on the
 true history (`--on-true-history`: the graph holds the true associations, the decisions are scored, not applied),
 label seeds 1-3 of each robot, against mm-nh's own run on the same logs: `decision_accuracy_real` and
 `da_accuracy_real`, mean over the label seeds with the range, and the wrong decisions by kind summed over the seeds.
@@ -151,8 +151,8 @@ def association_ceiling_section(semslam, data, scratch, shown, python=None):
 
 
 def true_history_lines(semslam, folder, scratch, shown):
-    """The causal ceiling's table: every robot and label seed on the true history and on its own decisions."""
-    lines = ["### The causal ceiling: decisions on the true history", "",
+    """The second table: every robot and label seed deciding on the true history and on its own decisions."""
+    lines = ["### Decisions on the true history", "",
              "mm-nh's front end deciding each detection with every earlier association right (`--on-true-history`: "
              "the graph holds the true associations; each decision is scored, never applied; docs/"
              "association-front-end.md §8b), against mm-nh deciding for itself on the same logs. Mean over label "

@@ -41,7 +41,7 @@ void addRunMethodOptions(CLI::App* command, RunMethodArguments& arguments) {
       ->capture_default_str();
   command->add_flag("--on-true-history", arguments.onTrueHistory,
                     "paper B's methods but known: the graph holds the true associations and the front end's own "
-                    "decision on each detection is scored (the causal ceiling, docs/association-front-end.md §8b)");
+                    "decision on each detection is scored, never applied (docs/association-front-end.md §8b)");
   command->add_option("--seed", arguments.options.hybrid.seed,
                       "hybrid: seed of the Monte Carlo draws; --pose-error-scale: seed of the pose errors")
       ->check(unsignedInteger64())

@@ -1,7 +1,9 @@
 #pragma once
 // DecisionAccuracy: how often paper B's front end decides a detection right when every earlier association was right
-// (SemanticSlamOptions::decideOnTrueHistory, docs/association-front-end.md §8b): the causal ceiling of its
-// decisions, one step at a time, with no error of its own to build on.
+// (SemanticSlamOptions::decideOnTrueHistory, docs/association-front-end.md §8b): its decisions one step at a time,
+// with no error of its own to build on. Not a bound on a run's own da_accuracy_real: a run repairs some decisions
+// later (a provisional landmark merged into the one it should have been, a mixture that switches), and loses
+// others to the lifecycle (a stream of clutter confirming a landmark of its own, which a true history never has).
 //
 // Each scored detection (a true landmark or clutter; kUnknownTruth is left out, as everywhere: docs/metrics.md)
 // carries the front end's decision d (a landmark, or unassigned) and the landmark the true history had for its

@@ -58,7 +58,7 @@
 //      says the estimate lags, as two do; after a long gap a lone detection stays what the null hypothesis is for.
 // Decisions where paper B is silent are in docs/max-mixtures.md.
 //
-// With decideOnTrueHistory (the causal ceiling, docs/association-front-end.md §8b) the graph is `known`'s and steps
+// With decideOnTrueHistory (decisions on the true history, docs/association-front-end.md §8b) the graph is `known`'s and steps
 // 1-2 run only to record the front end's decision on each detection (DetectionRecord::decided), never applied.
 //
 // A step is processed in two halves, beginStep (steps 1-2, the joint assignment found but not applied) and
@@ -142,7 +142,7 @@ struct SemanticSlamOptions {
   /// (LoopClosureBranches.h); 1: one split at a time, an anchoring step during an open split decided as without
   /// branches. Unset: LoopClosureBranches::kDefaultOpenSplits where branches apply, 1 elsewhere.
   std::optional<int> loopClosureOpenSplits;
-  /// The causal ceiling (docs/association-front-end.md §8b): the graph holds the true associations, as `known`'s
+  /// Decisions on the true history (docs/association-front-end.md §8b): the graph holds the true associations, as `known`'s
   /// does (a landmark per true object, clutter on none), and at every step the strategy's front end first decides
   /// the step's detections against that state (steps 1-2 under BirthRule::Unassigned: candidates, the joint gate,
   /// the unassigned hypothesis, the joint assignment). Each decision is recorded (DetectionRecord::decided) and
