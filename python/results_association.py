@@ -58,7 +58,9 @@ def association_section(semslam, data, scratch, shown):
         return lines + [f"MRCLAM Dataset 6 is not at {folder}: section skipped.", ""]
     lines += ["Whole recordings at 1 s keyframes; the unassigned birth rule with provisional landmarks "
               "(docs/association-front-end.md); `ceiling`: mm-nh's front end with the poses pinned to the known-DA "
-              "estimate (`--on-known-trajectory`), what association alone reaches there. Clutter is the other robots "
+              "estimate (`--on-known-trajectory`), what association alone reaches there (those poses were fitted "
+              "with the true associations and carry part of them: about 4 points above the front end's own "
+              "decisions on the true history, section association-ceiling). Clutter is the other robots "
               "(uniform labels).", ""]
     jobs = []
     for v, (title, convert_args, runs) in enumerate(VARIANTS):

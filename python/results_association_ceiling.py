@@ -111,7 +111,9 @@ def association_ceiling_section(semslam, data, scratch, shown, python=None):
               "(consecutive poses err together, as an estimate's do); `independent`, each pose from its own "
               "marginal (consecutive poses err independently). `da_accuracy_real`, mean over seeds 1-3 with the "
               "range; MRCLAM Dataset 6, whole recordings at 1 s keyframes, 3 classes, 10 % misclassification, "
-              "label seed 1.", ""]
+              "label seed 1. The known-DA trajectory was fitted with every detection on its true landmark, so its "
+              "poses carry part of the truth to the decisions judged from them: about 4 points of these figures "
+              "(docs/association-front-end.md §8, §8b; the next table is the front end's own figure).", ""]
     logs = {robot: os.path.join(scratch, f"association_ceiling_r{robot}.jsonl") for robot in ROBOTS}
     tasks = []
     for robot in ROBOTS:
