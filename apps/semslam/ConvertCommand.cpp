@@ -26,6 +26,7 @@ struct ConvertArguments {
   std::vector<double> initialPoseSigmas;
   std::size_t maxSteps = 0;
   bool robotGiven = false;
+  bool commandDelayGiven = false;
   bool kittiGiven = false;  // a kitti-tracking option was given
   std::array<double, 3> scoreThresholds{};  // given where the option was given
   double odometryNoiseScale = 1.0;
@@ -37,6 +38,9 @@ void run(ConvertArguments arguments) {
   options.maxSteps = arguments.maxSteps;
   if (arguments.robotGiven && arguments.kind != "mrclam") {
     throw InputError("--robot applies to mrclam only, not to " + arguments.kind);
+  }
+  if (arguments.commandDelayGiven && arguments.kind != "mrclam") {
+    throw InputError("--command-delay applies to mrclam only, not to " + arguments.kind);
   }
   if (arguments.kittiGiven && arguments.kind != "kitti-tracking") {
     throw InputError("--sequence, --score-threshold-*, --odometry, --odom-noise-scale, --max-range, --confusion and "
@@ -105,6 +109,11 @@ void addConvertCommand(CLI::App& app) {
       ->capture_default_str();
   CLI::Option* robot =
       command->add_option("--robot", arguments->options.robot, "mrclam: the robot 1..5")->capture_default_str();
+  CLI::Option* commandDelay =
+      command
+          ->add_option("--command-delay", arguments->options.commandDelay,
+                       "mrclam: seconds from a command's stamp to the motion it causes (docs/datasets.md)")
+          ->capture_default_str();
   KittiTrackingOptions& kitti = arguments->options.kitti;
   std::vector<CLI::Option*> kittiOptions = {
       command->add_option("--sequence", kitti.sequence, "kitti-tracking: the sequence number (label_02/NNNN.txt)"),
@@ -132,9 +141,10 @@ void addConvertCommand(CLI::App& app) {
       command->add_option("--matches-out", kitti.matchesOut,
                           "kitti-tracking: write each kept detection's match, truth kind and residual to this CSV"),
   };
-  command->callback([arguments, robot, kittiOptions]() {
+  command->callback([arguments, robot, commandDelay, kittiOptions]() {
     ConvertArguments copy = *arguments;
     copy.robotGiven = robot->count() > 0;
+    copy.commandDelayGiven = commandDelay->count() > 0;
     for (const CLI::Option* option : kittiOptions) copy.kittiGiven = copy.kittiGiven || option->count() > 0;
     for (std::size_t c = 0; c < 3; ++c) {  // kittiOptions[1..3]: the thresholds
       if (kittiOptions[1 + c]->count() > 0) copy.options.kitti.scoreThresholds[c] = copy.scoreThresholds[c];

@@ -146,7 +146,8 @@ TEST(RunCommand, OnTrueHistoryScoresTheFrontEndsDecisionsOnKnownsGraph) {
     while (std::getline(in, line)) rows += line.substr(0, line.rfind(',')) + "\n";
     return rows;
   };
-  EXPECT_EQ(withoutResiduals(dir / "decided" / "associations.csv"), withoutResiduals(dir / "known" / "associations.csv"));
+  EXPECT_EQ(withoutResiduals(dir / "decided" / "associations.csv"),
+            withoutResiduals(dir / "known" / "associations.csv"));
   // A run that decides for itself reports no decision metrics.
   std::ifstream knownMetrics(dir / "known" / "metrics.json");
   EXPECT_TRUE(nlohmann::json::parse(knownMetrics)["decision_accuracy_real"].is_null());

@@ -251,3 +251,39 @@ TEST(MrclamConverter, NumbersALogMayNotHoldAreRefusedAtTheirRow) {
   writeFolder({{"Robot1_Groundtruth.dat", "# t x y theta\n100.00 0 0 0\n100.50 0.05 0 0.05\n101.00 2.1e7 0 0.1\n"}});
   EXPECT_INPUT_ERROR(convertMrclam(folder, ConvertOptions{}), dir.path("Robot1_Groundtruth.dat"), 4, "true_pose[0]");
 }
+
+// --command-delay: a command takes effect that long after its stamp, so its step starts there and the motion before
+// it is the previous command's (docs/datasets.md, "The command delay").
+TEST(MrclamConverter, ACommandDelayShiftsWhereEachCommandTakesEffect) {
+  TempDir dir;
+  dir.write("Barcodes.dat", "# subject barcode\n1 5\n6 27\n7 36\n");
+  dir.write("Landmark_Groundtruth.dat", "# subject x y x_sd y_sd\n6 1.0 2.0 0.0001 0.0001\n7 3.0 -1.0 0.0001 0.0001\n");
+  dir.write("Robot1_Odometry.dat", "# t v omega\n100.00 0.1 0.0\n100.50 0.2 0.4\n101.00 0.1 0.1\n");
+  dir.write("Robot1_Measurement.dat", "# t barcode range bearing\n100.50 27 2.2 1.1\n100.75 36 3.1 -0.3\n");
+  dir.write("Robot1_Groundtruth.dat", "# t x y theta\n100.00 0 0 0\n100.50 0.05 0 0.05\n101.00 0.1 0 0.1\n");
+  const std::string folder = dir.path("");
+  ConvertOptions options;
+  options.commandDelay = 0.2;
+  const MeasurementLog log = convertMrclam(folder, options);
+  // Steps at the delayed command stamps 100.2, 100.7, 101.2 and the measurement stamps 100.5, 100.75.
+  std::vector<double> times;
+  for (const TimeStep& step : log.steps) times.push_back(step.time);
+  const std::vector<double> expected = {100.2, 100.5, 100.7, 100.75, 101.2};
+  ASSERT_EQ(times.size(), expected.size());
+  for (std::size_t k = 0; k < expected.size(); ++k) EXPECT_NEAR(times[k], expected[k], 1e-9) << "step " << k;
+  const auto arc = [](double v, double omega, double dt) { return SE2::Exp(Vector3(v * dt, 0.0, omega * dt)); };
+  const auto increment = [&](std::size_t k) { return std::get<SE2>(log.steps[k].odometry->increment); };
+  // 100.5 → 100.7: still the first command (the second, stamped 100.5, takes effect at 100.7).
+  EXPECT_TRUE(increment(2).equals(arc(0.1, 0.0, 0.2), 1e-12));
+  // 100.7 → 100.75 and 100.75 → 101.2: the second command.
+  EXPECT_TRUE(increment(3).equals(arc(0.2, 0.4, 0.05), 1e-12));
+  EXPECT_TRUE(increment(4).equals(arc(0.2, 0.4, 0.45), 1e-12));
+  // Without the delay the second command drives the step at 100.75 from 100.5 on.
+  const MeasurementLog undelayed = convertMrclam(folder, ConvertOptions{});
+  EXPECT_TRUE(std::get<SE2>(undelayed.steps[2].odometry->increment).equals(arc(0.2, 0.4, 0.25), 1e-12));
+
+  for (double refused : {-0.1, kMrclamMaxCommandDelay + 0.1, std::nan("")}) {
+    options.commandDelay = refused;
+    EXPECT_THROW(convertMrclam(folder, options), InputError) << refused;
+  }
+}

@@ -58,8 +58,9 @@
 //      says the estimate lags, as two do; after a long gap a lone detection stays what the null hypothesis is for.
 // Decisions where paper B is silent are in docs/max-mixtures.md.
 //
-// With decideOnTrueHistory (decisions on the true history, docs/association-front-end.md §8b) the graph is `known`'s and steps
-// 1-2 run only to record the front end's decision on each detection (DetectionRecord::decided), never applied.
+// With decideOnTrueHistory (decisions on the true history, docs/association-front-end.md §8b) the graph is
+// `known`'s and steps 1-2 run only to record the front end's decision on each detection (DetectionRecord::decided),
+// never applied.
 //
 // A step is processed in two halves, beginStep (steps 1-2, the joint assignment found but not applied) and
 // completeStep (the rest), so that a run can be forked between them with a different decision on the step's
@@ -142,8 +143,8 @@ struct SemanticSlamOptions {
   /// (LoopClosureBranches.h); 1: one split at a time, an anchoring step during an open split decided as without
   /// branches. Unset: LoopClosureBranches::kDefaultOpenSplits where branches apply, 1 elsewhere.
   std::optional<int> loopClosureOpenSplits;
-  /// Decisions on the true history (docs/association-front-end.md §8b): the graph holds the true associations, as `known`'s
-  /// does (a landmark per true object, clutter on none), and at every step the strategy's front end first decides
+  /// Decisions on the true history (docs/association-front-end.md §8b): the graph holds the true associations, as
+  /// `known`'s does (a landmark per true object, clutter on none), and at every step the strategy's front end decides
   /// the step's detections against that state (steps 1-2 under BirthRule::Unassigned: candidates, the joint gate,
   /// the unassigned hypothesis, the joint assignment). Each decision is recorded (DetectionRecord::decided) and
   /// never applied, so every decision is taken on a history with no error in it. Needs BirthRule::Unassigned and a

@@ -64,6 +64,9 @@ struct ConvertOptions {
   double mapPriorSigma = 0.0;
   /// MRCLAM: the robot (1..5) whose odometry and measurements are converted.
   int robot = 1;
+  /// MRCLAM: seconds between a command's stamp and the motion it causes (the command takes effect this long after
+  /// its stamp; docs/datasets.md measures about 0.2 s on every robot). 0: at its stamp.
+  double commandDelay = 0.0;
   /// KITTI tracking only.
   KittiTrackingOptions kitti;
 };

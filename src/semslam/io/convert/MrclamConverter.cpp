@@ -5,6 +5,7 @@
 #include <set>
 #include <sstream>
 
+#include "semslam/core/ExactNumber.h"
 #include "semslam/core/InputError.h"
 #include "semslam/io/convert/ConversionCommon.h"
 #include "semslam/models/UnicycleModel.h"
@@ -82,7 +83,15 @@ MeasurementLog convertMrclam(const std::string& folder, const ConvertOptions& op
   };
   std::vector<Stamp> stamps;
   stamps.reserve(odometry.size() + measurements.size());
-  for (const NumericRow& row : odometry) stamps.push_back(Stamp{row.values[0], SourceLine{odometryPath, row.line, 0}});
+  // A command takes effect options.commandDelay after its stamp: that is where its step starts.
+  const double delay = options.commandDelay;
+  if (!(delay >= 0.0 && delay <= kMrclamMaxCommandDelay)) {
+    throw InputError("mrclam: the command delay must be in [0, " + shortestExactNumber(kMrclamMaxCommandDelay) +
+                     "] seconds, not " + shortestExactNumber(delay));
+  }
+  for (const NumericRow& row : odometry) {
+    stamps.push_back(Stamp{row.values[0] + delay, SourceLine{odometryPath, row.line, 0}});
+  }
   for (const NumericRow& row : measurements) {
     stamps.push_back(Stamp{row.values[0], SourceLine{measurementPath, row.line, 0}});
   }
@@ -110,7 +119,7 @@ MeasurementLog convertMrclam(const std::string& folder, const ConvertOptions& op
       // The command in force, or the step's own stamp before the first command.
       sources.steps[k].odometry = next > 0 ? SourceLine{odometryPath, odometry[next - 1].line, 0} : stamps[k].row;
     }
-    while (next < odometry.size() && odometry[next].values[0] <= times[k]) {
+    while (next < odometry.size() && odometry[next].values[0] + delay <= times[k]) {
       v = odometry[next].values[1];
       omega = odometry[next].values[2];
       ++next;
@@ -163,7 +172,9 @@ MeasurementLog convertMrclam(const std::string& folder, const ConvertOptions& op
   std::ostringstream source;
   source.precision(12);
   source << "UTIAS MRCLAM " << robot << " (" << folder << "), semslam convert mrclam: steps at every odometry and "
-         << "measurement stamp, unicycle odometry of the command in force with white input noise intensities "
+         << "measurement stamp, unicycle odometry of the command in force"
+         << (delay > 0.0 ? " (from " + shortestExactNumber(delay) + " s after its stamp)" : std::string()) << " "
+         << "with white input noise intensities "
          << kMrclamVelocityIntensity << " (m/s)^2 s and " << kMrclamTurnRateIntensity << " (rad/s)^2 s (lateral slip "
          << kMrclamLateralIntensity << " m^2/s), range-bearing with sigma " << kMrclamRangeSigma << " m, "
          << kMrclamBearingSigma

@@ -13,8 +13,9 @@
 // What it does
 //   - steps at every distinct odometry or measurement time stamp (the measurement stamps split the odometry
 //     intervals, so every detection sits at its own time, exactly);
-//   - the command (v, ω) of an odometry row holds from its stamp until the next row's (of two rows with one stamp,
-//     the later wins; before the first row the robot is at rest); each interval between steps is a unicycle
+//   - the command (v, ω) of an odometry row holds from its stamp (+ ConvertOptions::commandDelay, 0 by default: a
+//     step starts there) until the next row's (of two rows with one stamp, the later wins; before the first row
+//     the robot is at rest); each interval between steps is a unicycle
 //     increment (UnicycleModel) with input noise of white intensity: σ_v² = kMrclamVelocityIntensity / dt,
 //     σ_ω² = kMrclamTurnRateIntensity / dt (so the covariance grows with time, not with the number of stamps, and
 //     splitting an interval does not change it), plus a floor of intensities (1e-6, kMrclamLateralIntensity,
@@ -54,6 +55,8 @@ inline constexpr double kMrclamBearingSigma = 0.014;  // radians
 inline constexpr double kMrclamVelocityIntensity = 1.4e-4;  // (m/s)² · s
 inline constexpr double kMrclamTurnRateIntensity = 1.6e-3;  // (rad/s)² · s
 inline constexpr double kMrclamLateralIntensity = 4e-6;     // m²/s
+/// The largest command delay the converter takes (seconds): ten times the measured 0.2 s.
+inline constexpr double kMrclamMaxCommandDelay = 2.0;
 /// Ground-truth samples further apart than this are not interpolated between (seconds).
 inline constexpr double kMrclamMaxTruthGap = 0.5;
 
