@@ -221,19 +221,27 @@ TEST(MrclamConverter, RejectsAnUnknownRobot) {
 
 // Numbers a log may not hold are refused at the dataset row that made them (they were reported as "step 2" of the
 // log, or at the folder: issue 16).
+namespace {
+
+/// A dataset folder of robot 1 with three commands (stamps 100, 100.5, 101), two measurements (100.5, 100.75) and
+/// three Vicon samples; `edits` replaces whole files.
+void writeSmallFolder(TempDir& dir, const std::map<std::string, std::string>& edits = {}) {
+  std::map<std::string, std::string> files = {
+      {"Barcodes.dat", "# subject barcode\n1 5\n6 27\n7 36\n"},
+      {"Landmark_Groundtruth.dat", "# subject x y x_sd y_sd\n6 1.0 2.0 0.0001 0.0001\n7 3.0 -1.0 0.0001 0.0001\n"},
+      {"Robot1_Odometry.dat", "# t v omega\n100.00 0.1 0.0\n100.50 0.1 0.1\n101.00 0.1 0.1\n"},
+      {"Robot1_Measurement.dat", "# t barcode range bearing\n100.50 27 2.2 1.1\n100.75 36 3.1 -0.3\n"},
+      {"Robot1_Groundtruth.dat", "# t x y theta\n100.00 0 0 0\n100.50 0.05 0 0.05\n101.00 0.1 0 0.1\n"}};
+  for (const auto& [name, text] : edits) files[name] = text;
+  for (const auto& [name, text] : files) dir.write(name, text);
+}
+
+}  // namespace
+
 TEST(MrclamConverter, NumbersALogMayNotHoldAreRefusedAtTheirRow) {
   TempDir dir;
   const std::string folder = dir.path("");
-  const auto writeFolder = [&](const std::map<std::string, std::string>& edits) {
-    std::map<std::string, std::string> files = {
-        {"Barcodes.dat", "# subject barcode\n1 5\n6 27\n7 36\n"},
-        {"Landmark_Groundtruth.dat", "# subject x y x_sd y_sd\n6 1.0 2.0 0.0001 0.0001\n7 3.0 -1.0 0.0001 0.0001\n"},
-        {"Robot1_Odometry.dat", "# t v omega\n100.00 0.1 0.0\n100.50 0.1 0.1\n101.00 0.1 0.1\n"},
-        {"Robot1_Measurement.dat", "# t barcode range bearing\n100.50 27 2.2 1.1\n100.75 36 3.1 -0.3\n"},
-        {"Robot1_Groundtruth.dat", "# t x y theta\n100.00 0 0 0\n100.50 0.05 0 0.05\n101.00 0.1 0 0.1\n"}};
-    for (const auto& [name, text] : edits) files[name] = text;
-    for (const auto& [name, text] : files) dir.write(name, text);
-  };
+  const auto writeFolder = [&](const std::map<std::string, std::string>& edits) { writeSmallFolder(dir, edits); };
   writeFolder({});
   EXPECT_EQ(convertMrclam(folder, ConvertOptions{}).steps.size(), 4u);  // stamps 100, 100.5, 100.75, 101
 
@@ -256,11 +264,7 @@ TEST(MrclamConverter, NumbersALogMayNotHoldAreRefusedAtTheirRow) {
 // it is the previous command's (docs/datasets.md, "The command delay").
 TEST(MrclamConverter, ACommandDelayShiftsWhereEachCommandTakesEffect) {
   TempDir dir;
-  dir.write("Barcodes.dat", "# subject barcode\n1 5\n6 27\n7 36\n");
-  dir.write("Landmark_Groundtruth.dat", "# subject x y x_sd y_sd\n6 1.0 2.0 0.0001 0.0001\n7 3.0 -1.0 0.0001 0.0001\n");
-  dir.write("Robot1_Odometry.dat", "# t v omega\n100.00 0.1 0.0\n100.50 0.2 0.4\n101.00 0.1 0.1\n");
-  dir.write("Robot1_Measurement.dat", "# t barcode range bearing\n100.50 27 2.2 1.1\n100.75 36 3.1 -0.3\n");
-  dir.write("Robot1_Groundtruth.dat", "# t x y theta\n100.00 0 0 0\n100.50 0.05 0 0.05\n101.00 0.1 0 0.1\n");
+  writeSmallFolder(dir, {{"Robot1_Odometry.dat", "# t v omega\n100.00 0.1 0.0\n100.50 0.2 0.4\n101.00 0.1 0.1\n"}});
   const std::string folder = dir.path("");
   ConvertOptions options;
   options.commandDelay = 0.2;
