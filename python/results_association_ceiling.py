@@ -149,19 +149,20 @@ def association_ceiling_section(semslam, data, scratch, shown, python=None):
               "build/bin/semslam run --method mm-nh --in rN.jsonl --out DIR --no-covariances --on-known-trajectory "
               "--pose-error-scale S --pose-error-draw joint|independent --seed SEED",
               "```", ""]
-    return lines + true_history_lines(semslam, folder, scratch, shown)
+    return lines + true_history_lines(semslam, folder, scratch, shown, logs)
 
 
-def true_history_lines(semslam, folder, scratch, shown):
-    """The second table: every robot and label seed deciding on the true history and on its own decisions."""
+def true_history_lines(semslam, folder, scratch, shown, seed_one_logs):
+    """The second table: every robot and label seed deciding on the true history and on its own decisions.
+    seed_one_logs[robot]: the first table's logs, label seed 1 (converted once, not again)."""
     lines = ["### Decisions on the true history", "",
              "mm-nh's front end deciding each detection with every earlier association right (`--on-true-history`: "
              "the graph holds the true associations; each decision is scored, never applied; docs/"
              "association-front-end.md §8b), against mm-nh deciding for itself on the same logs. Mean over label "
              "seeds 1-3 with the range; wrong decisions by kind summed over the seeds; MRCLAM Dataset 6, whole "
              "recordings at 1 s keyframes, 3 classes, 10 % misclassification.", ""]
-    logs = {(robot, seed): os.path.join(scratch, f"true_history_r{robot}_s{seed}.jsonl")
-            for robot in ROBOTS for seed in LABEL_SEEDS}
+    logs = {(robot, seed): seed_one_logs[robot] if seed == 1 else
+            os.path.join(scratch, f"true_history_r{robot}_s{seed}.jsonl") for robot in ROBOTS for seed in LABEL_SEEDS}
     out = {(kind, robot, seed): os.path.join(scratch, f"true_history_{kind}_r{robot}_s{seed}")
            for kind in ("decided", "own") for robot in ROBOTS for seed in LABEL_SEEDS}
 
@@ -173,7 +174,8 @@ def true_history_lines(semslam, folder, scratch, shown):
 
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, (os.cpu_count() or 2))) as pool:
         list(pool.map(lambda key: run_checked([semslam, "convert", "mrclam", folder, "--out", logs[key], "--robot",
-                                               str(key[0]), "--seed", str(key[1])] + CONVERT_ARGS), logs))
+                                               str(key[0]), "--seed", str(key[1])] + CONVERT_ARGS),
+                      [key for key in logs if key[1] != 1]))
         list(pool.map(run, sorted(out, key=lambda task: task[0] == "decided")))  # the slower own runs first
     decided = {(r, s): read_metrics(out[("decided", r, s)]) for r in ROBOTS for s in LABEL_SEEDS}
     own = {(r, s): read_metrics(out[("own", r, s)])["da_accuracy_real"] for r in ROBOTS for s in LABEL_SEEDS}

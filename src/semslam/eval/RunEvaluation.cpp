@@ -18,6 +18,14 @@ void requireOnePerStep(std::size_t size, std::size_t steps, const std::string& w
   }
 }
 
+/// A per-detection list of step `step` (associations, decisions) holds one entry per detection of the step.
+void requireOnePerDetection(std::size_t size, std::size_t detections, std::size_t step, const std::string& what) {
+  if (size != detections) {
+    throw InputError("run evaluation: step " + std::to_string(step) + " has " + std::to_string(detections) +
+                     " detections but " + std::to_string(size) + " " + what);
+  }
+}
+
 double poseNeesOf(const Pose& estimate, const Pose& truth, const Matrix& covariance) {
   if (const SE2* e = std::get_if<SE2>(&estimate)) {
     const SE2* t = std::get_if<SE2>(&truth);
@@ -104,6 +112,7 @@ RunEvaluation evaluateRun(const MeasurementLog& log, const RunResult& result, co
   requireOnePerStep(result.poses.size(), steps, "pose estimates");
   requireOnePerStep(result.poseCovariances.size(), steps, "pose covariances");
   requireOnePerStep(result.associations.size(), steps, "association lists");
+  requireOnePerStep(result.historyDecisions.size(), steps, "decision lists");
   if (!result.poseCovariances.empty() && result.poses.empty()) {
     throw InputError("run evaluation: pose covariances without pose estimates");
   }
@@ -160,10 +169,7 @@ RunEvaluation evaluateRun(const MeasurementLog& log, const RunResult& result, co
     for (std::size_t i = 0; i < steps; ++i) {
       const std::vector<Detection>& detections = log.steps[i].detections;
       const std::vector<std::optional<int>>& associated = result.associations[i];
-      if (associated.size() != detections.size()) {
-        throw InputError("run evaluation: step " + std::to_string(i) + " has " + std::to_string(detections.size()) +
-                         " detections but " + std::to_string(associated.size()) + " associations");
-      }
+      requireOnePerDetection(associated.size(), detections.size(), i, "associations");
       for (std::size_t j = 0; j < detections.size(); ++j) {
         if (const std::optional<int> truth = scoredTruth(detections[j].truthId)) {
           const std::optional<int> source = *truth == kNotALandmark ? detections[j].clutterSource : std::nullopt;
@@ -180,17 +186,10 @@ RunEvaluation evaluateRun(const MeasurementLog& log, const RunResult& result, co
   }
 
   if (!result.historyDecisions.empty()) {
-    if (result.historyDecisions.size() != steps) {
-      throw InputError("run evaluation: the log has " + std::to_string(steps) + " steps but the run decided " +
-                       std::to_string(result.historyDecisions.size()));
-    }
     std::vector<ScoredDecision> scored;
     for (std::size_t i = 0; i < steps; ++i) {
       const std::vector<Detection>& detections = log.steps[i].detections;
-      if (result.historyDecisions[i].size() != detections.size()) {
-        throw InputError("run evaluation: step " + std::to_string(i) + " has " + std::to_string(detections.size()) +
-                         " detections but " + std::to_string(result.historyDecisions[i].size()) + " decisions");
-      }
+      requireOnePerDetection(result.historyDecisions[i].size(), detections.size(), i, "decisions");
       for (std::size_t j = 0; j < detections.size(); ++j) {
         if (const std::optional<int> truth = scoredTruth(detections[j].truthId)) {
           scored.push_back({*truth, result.historyDecisions[i][j]});

@@ -46,10 +46,9 @@ void runSemanticSlam(const MeasurementLog& log, const MethodOptions& options, co
   run.evaluation = evaluateRun(log, run.result);
   if (!options.runFolder) return;
   std::vector<AssociationRecord> associations;
-  const bool graphFollowsTruth = slamOptions.strategy == AssociationStrategy::Known || slamOptions.decideOnTrueHistory;
   for (const DetectionRecord& record : slam.detections()) {
     const auto [landmark, weight] = slam.chosenAssociation(record);
-    if (graphFollowsTruth && !landmark) continue;  // clutter: no factor
+    if (slam.graphFollowsTruth() && !landmark) continue;  // clutter: no factor
     associations.push_back({record.step, record.detection, landmark, weight, record.truth, slam.residualChi2(record)});
   }
   run.output = runOutputFrom(log, run.result, std::move(associations));
@@ -121,7 +120,7 @@ MethodRun runMethod(const MeasurementLog& log, const MethodOptions& options, con
                                   "every mixture at every Gauss-Newton iterate");
     }
   }
-  if (options.slam.decideOnTrueHistory && (isHybrid(options.method) || options.method == Method::Known)) {
+  if (options.slam.decideOnTrueHistory && isHybrid(options.method)) {  // (known: SemanticSlam refuses it)
     throw std::invalid_argument("decisions on the true history are paper B's front end's: " +
                                 methodName(options.method) + " takes none");
   }

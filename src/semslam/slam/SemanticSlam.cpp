@@ -247,7 +247,7 @@ void SemanticSlam::completeStep() {
   pending_.reset();
   const int k = steps() - 1;
   const Key pose = poseKeys_.back();
-  const bool known = graphFollowsTruth();
+  const bool truthAssociations = graphFollowsTruth();
   const bool jointly = jointlyAssigned();
   const std::optional<JointMarginal>& marginal = pending.marginal;
   const std::vector<int>& considered = pending.considered;
@@ -266,7 +266,7 @@ void SemanticSlam::completeStep() {
     const std::size_t factorsBefore = associations.size();
     const Value& robot = values.exists(pose) ? values.value(pose) : smoother_->estimate().value(pose);
 
-    if (known) {
+    if (truthAssociations) {
       if (scoredTruth(record.truth) && *record.truth != kNotALandmark) {  // clutter and "unknown": no factor
         const auto found = landmarkOfTruthId_.find(*record.truth);
         int index = 0;

@@ -239,6 +239,8 @@ class SemanticSlam {
   std::optional<double> orientationPriorPositionScore() const;
   const UnassignedHypothesis& unassignedHypothesis() const { return unassigned_; }
   const SemanticSlamOptions& options() const { return options_; }
+  /// Whether the graph holds the true associations (`known`, or decideOnTrueHistory): clutter is then on no factor.
+  bool graphFollowsTruth() const;
   /// rᵀ R⁻¹ r of the detection against the landmark chosenAssociation() gives, at the current estimate (R: the
   /// detection's covariance); nullopt when it is on no landmark.
   std::optional<double> residualChi2(const DetectionRecord& record) const;
@@ -283,8 +285,6 @@ class SemanticSlam {
   /// Whether the step's detections are assigned jointly (§1-4): BirthRule::Unassigned, not `known`, and the
   /// assignment applied (not decideOnTrueHistory).
   bool jointlyAssigned() const;
-  /// Whether the graph holds the true associations: `known`, or decideOnTrueHistory.
-  bool graphFollowsTruth() const;
   /// decideOnTrueHistory: the front end's decisions on the begun step (steps 1-2, from `first`), recorded with the
   /// right one beside each, not applied.
   void recordDecisions(std::size_t first, const std::vector<int>& decided);
