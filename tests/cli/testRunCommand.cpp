@@ -12,6 +12,7 @@
 #include <vector>
 #include <nlohmann/json.hpp>
 
+#include "semslam/io/MeasurementLogFile.h"
 #include "semslam/io/ScenarioFile.h"
 #include "semslam/sim/Aliased2dLayout.h"
 #include "support/RunCommand.h"
@@ -150,9 +151,40 @@ TEST(RunCommand, OnTrueHistoryScoresTheFrontEndsDecisionsOnKnownsGraph) {
   };
   EXPECT_EQ(withoutResiduals(dir / "decided" / "associations.csv"),
             withoutResiduals(dir / "known" / "associations.csv"));
-  // A run that decides for itself reports no decision metrics.
+  // decisions.csv: a row per detection, its right decisions over the real detections the metric.
+  std::ifstream decisions(dir / "decided" / "decisions.csv");
+  std::string line;
+  std::getline(decisions, line);
+  EXPECT_EQ(line, "step,detection,decided,right,truth");
+  int rows = 0, real = 0, right = 0, clutterRejected = 0, clutter = 0;
+  while (std::getline(decisions, line)) {
+    ++rows;
+    std::vector<std::string> fields;
+    std::stringstream row(line);
+    for (std::string field; std::getline(row, field, ',');) fields.push_back(field);
+    if (line.back() == ',') fields.emplace_back();
+    ASSERT_EQ(fields.size(), 5u) << line;
+    if (fields[4] == "not-a-landmark") {
+      ++clutter;
+      EXPECT_EQ(fields[3], "unassigned") << line;  // clutter is right only unassigned
+      if (fields[2] == "unassigned") ++clutterRejected;
+    } else {
+      ++real;
+      if (fields[2] == fields[3]) ++right;
+    }
+  }
+  int detections = 0;
+  for (const auto& step : semslam::readMeasurementLog(log.string()).steps) detections += static_cast<int>(step.detections.size());
+  EXPECT_EQ(rows, detections);
+  ASSERT_GT(real, 0);
+  EXPECT_DOUBLE_EQ(metrics["decision_accuracy_real"].get<double>(), static_cast<double>(right) / real);
+  if (clutter > 0) {
+    EXPECT_DOUBLE_EQ(metrics["decision_clutter_rejected"].get<double>(), static_cast<double>(clutterRejected) / clutter);
+  }
+  // A run that decides for itself reports no decision metrics and writes no decisions.csv.
   std::ifstream knownMetrics(dir / "known" / "metrics.json");
   EXPECT_TRUE(nlohmann::json::parse(knownMetrics)["decision_accuracy_real"].is_null());
+  EXPECT_FALSE(fs::exists(dir / "known" / "decisions.csv"));
   // Refused with exit 2: nothing to decide (known, the hybrid belief), or two ceilings at once.
   for (const std::string refused : {"--method known --on-true-history", "--method hybrid --on-true-history",
                                     "--method mm-nh --on-true-history --on-known-trajectory",

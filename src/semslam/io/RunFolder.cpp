@@ -19,6 +19,10 @@ std::string truthField(const std::optional<int>& truth) {
   return std::to_string(*truth);
 }
 
+std::string landmarkOrUnassigned(const std::optional<int>& landmark) {
+  return landmark ? std::to_string(*landmark) : "unassigned";
+}
+
 void writePositionColumns(std::ostream& out, const Vector& position) {
   for (int i = 0; i < position.size(); ++i) out << "," << seventeenDigitNumber(position(i));
 }
@@ -89,6 +93,15 @@ void writeRunFolder(const std::string& directory, const RunOutput& run) {
         out << split.openedAt << "," << split.closedAfter << "," << seventeenDigitNumber(split.scoreAsIs) << ","
             << seventeenDigitNumber(split.scoreApart) << ","
             << (split.scoreNextBest ? seventeenDigitNumber(*split.scoreNextBest) : "") << "," << split.kept << "\n";
+      }
+    });
+  }
+  if (!run.decisions.empty()) {
+    writeFileAtomically((folder / "decisions.csv").string(), [&](std::ostream& out) {
+      out << "step,detection,decided,right,truth\n";
+      for (const DecisionRecord& d : run.decisions) {
+        out << d.step << "," << d.detection << "," << landmarkOrUnassigned(d.decision.decided) << ","
+            << landmarkOrUnassigned(d.decision.right) << "," << truthField(d.truth) << "\n";
       }
     });
   }

@@ -18,6 +18,12 @@
 //                          the branches' scores (−2 ln evidence, slam/BranchScore.h; score_next_best empty where
 //                          that split opened no next-best branch: mm-nh's default, --loop-closure-next-best for ml
 //                          and mm) and which was kept, `as-is`, `apart` or `next-best`
+//   decisions.csv          `step,detection,decided,right,truth`: runs on the true history (--on-true-history) only,
+//                          one row per detection: the landmark the front end decided and the landmark the true
+//                          history had for the detection's object (`unassigned` for the unassigned hypothesis, and as
+//                          `right` for clutter and first sightings; landmark ids those of landmarks.csv), truth as
+//                          in associations.csv. A decision is right exactly when `decided` equals `right`
+//                          (eval/DecisionAccuracy.h)
 // metrics.json is written by io/RunMetricsFile.h. Every file is written atomically (io/AtomicFile.h); a file whose
 // data is empty (no truth, no associations) is not written.
 
@@ -50,6 +56,14 @@ struct BranchSplitRecord {
   std::string kept;                     // "as-is", "apart" or "next-best"
 };
 
+/// One row of decisions.csv: a decision on the true history (models/RunResult.h, HistoryDecision).
+struct DecisionRecord {
+  int step = 0;
+  int detection = 0;
+  HistoryDecision decision;
+  std::optional<int> truth;  // as AssociationRecord::truth
+};
+
 struct RunOutput {
   int dimension = 2;
   Trajectory trajectory;
@@ -59,6 +73,7 @@ struct RunOutput {
   std::vector<LandmarkTruth> landmarkTruth;
   std::vector<AssociationRecord> associations;
   std::vector<BranchSplitRecord> branchSplits;
+  std::vector<DecisionRecord> decisions;
 };
 
 /// The SE3 form of a pose for trajectory files: SE2 (x, y, θ) becomes (x, y, 0) with a rotation θ about z.

@@ -56,6 +56,13 @@ void runSemanticSlam(const MeasurementLog& log, const MethodOptions& options, co
     run.output.branchSplits.push_back({split.openedAt, split.closedAfter, split.scoreA, split.scoreB, split.scoreC,
                                        LoopClosureBranches::branchName(split.kept)});
   }
+  for (std::size_t k = 0; k < run.result.historyDecisions.size(); ++k) {
+    const std::vector<HistoryDecision>& decisions = run.result.historyDecisions[k];
+    for (std::size_t i = 0; i < decisions.size(); ++i) {
+      run.output.decisions.push_back(
+          {static_cast<int>(k), static_cast<int>(i), decisions[i], log.steps[k].detections[i].truthId});
+    }
+  }
 }
 
 /// Paper A: every detection of the heaviest final component's history, weighted by that history's association
