@@ -75,5 +75,40 @@ TEST(BranchScore, OneObjectAgainstTwoIsTheMergeTest) {
   EXPECT_NEAR(scoreOf(0, 0) - scoreOf(0, 1), expected, 1e-6);
 }
 
+/// A `known` run whose first step sees object 0 and whose second step sees one detection `second` (labelled 1).
+double scoreWithSecond(const LogHeader& h, const Detection& first, const Detection& second) {
+  SemanticSlamOptions options;
+  options.strategy = AssociationStrategy::Known;
+  SemanticSlam run(h, options);
+  TimeStep one, two;
+  one.detections.push_back(first);
+  two.time = 1.0;
+  two.odometry = Odometry{SE2(), 1e-16 * Matrix::Identity(3, 3)};
+  two.detections.push_back(second);
+  run.addStep(one);
+  run.addStep(two);
+  return branchScore(run);
+}
+
+// A detection that no factor holds (here `known`'s clutter) is explained by the unassigned density λ(z); a landmark
+// seen once explains its detection as well as that: its Gaussian integrates to the Jacobian of the back-projection,
+// and its prior is ρ, so together ρ·|J| = λ(z). The two scores are equal, for a relative-position sensor (λ = ρ) and
+// for range-bearing (λ = ρ r): without the λ term the clutter would score 2 ln(1/λ) lower (15.9 and 8.6 here).
+TEST(BranchScore, ADetectionOnNoFactorScoresAsALandmarkSeenOnce) {
+  const Detection first = detection(kFirst, kFirstCovariance, 0, 0);
+  EXPECT_NEAR(scoreWithSecond(header(), first, detection(kSecond, kSecondCovariance, 1, 1)),
+              scoreWithSecond(header(), first, detection(kSecond, kSecondCovariance, 1, kNotALandmark)), 1e-6);
+
+  LogHeader rangeBearing = header();
+  rangeBearing.sensor.kind = SensorKind::RangeBearing;
+  rangeBearing.sensor.fieldOfView = 1.2;  // ρ = 1 / (0.6 · 30²)
+  const Matrix noise = covariance(0.04, 0.0, 0.0004);
+  const Detection near = detection(Point2(4.0, 0.1), noise, 0, 0);
+  const Detection far = detection(Point2(7.5, -0.2), noise, 1, 1);  // range 7.5 m, bearing −0.2 rad
+  Detection clutter = far;
+  clutter.truthId = kNotALandmark;
+  EXPECT_NEAR(scoreWithSecond(rangeBearing, near, far), scoreWithSecond(rangeBearing, near, clutter), 1e-6);
+}
+
 }  // namespace
 }  // namespace semslam

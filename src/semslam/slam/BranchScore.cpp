@@ -40,6 +40,16 @@ double labelScore(const SemanticSlam& run, const Values& estimate) {
   return -2.0 * logEvidence;
 }
 
+/// −2 ln of the unassigned density λ(z) of every detection on no factor: under §1's model a detection that no
+/// landmark explains comes from the unassigned density (its label's P₀ is in labelScore).
+double unexplainedScore(const SemanticSlam& run) {
+  double score = 0.0;
+  for (const DetectionRecord& record : run.detections()) {
+    if (record.onNoFactor()) score -= 2.0 * run.unassignedHypothesis().logDensity(record.measurement);
+  }
+  return score;
+}
+
 }  // namespace
 
 double branchScore(const SemanticSlam& run) {
@@ -65,7 +75,8 @@ double branchScore(const SemanticSlam& run) {
   // there and is taken out (an inactive landmark keeps it: with nothing else on its variable it integrates to 1).
   const double landmarkPrior =
       -2.0 * run.unassignedHypothesis().logLandmarkDensity() - run.orientationPriorPositionScore().value_or(0.0);
-  return laplaceEvidenceScore(model, estimate) + activeLandmarks * landmarkPrior + labelScore(run, estimate);
+  return laplaceEvidenceScore(model, estimate) + activeLandmarks * landmarkPrior + unexplainedScore(run) +
+         labelScore(run, estimate);
 }
 
 }  // namespace semslam

@@ -10,13 +10,19 @@
 //         − 2 Σ_l ln Σ_c (1/M) Π_{r on l} P(s_r | c)                 each active landmark's labels, one class drawn
 //                                                                   from the uniform prior
 //         − 2 Σ_{r on no landmark} ln P₀(s_r)                       P₀ = Σ_c P(s | c) / M
+//         − 2 Σ_{r on no factor} ln λ(z_r)                          a detection no factor holds (a dropped
+//                                                                   provisional landmark's, clutter of `known`)
+//                                                                   from the unassigned density (UnassignedHypothesis)
 //
 // The model's factors are those in force with two substitutions. A max-mixture counts as its component active at
 // X̂, without its weight: the front end's candidate weights are posteriors of the association, not part of the
 // likelihood of the data given it. The weak priors (SemanticSlam::weakPriors) are left out: they stand in for ρ,
 // which is counted for every active landmark instead (their normaliser, σ the sensor's range, would otherwise
 // outweigh the evidence between two branches: §10); a dropped or merged-away landmark's variable then touches no
-// factor and leaves the integral.
+// factor and leaves the integral. A detection that no factor holds is still data the branch must explain: §1's
+// model gives it the unassigned density λ(z) (per m·rad for range-bearing). Left out, it would count as a density
+// of 1 in whatever units the measurement has, so the score would depend on the units, and a branch would gain
+// 2 ln(1/λ) per detection it leaves on no factor (about 5 on MRCLAM, whose λ is about 0.07 per m·rad at 3 m).
 //
 // A lower score is a better branch. For two branches that differ only in whether detections of one object are on
 // one landmark or two, the difference is §5's merge test at X̂: −2 ln(N(p_P − p_L; 0, Σ_d) · class agreement / ρ)

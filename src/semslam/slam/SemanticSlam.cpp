@@ -205,10 +205,11 @@ void SemanticSlam::beginStep(const TimeStep& step) {
     record.semanticLikelihoods = semanticLikelihoods(header_, step.detections[i]);
     records_.push_back(std::move(record));
   }
+  // The sensor field's extents, as the data define them: the unassigned density (§1), also in the branch score.
+  for (const Detection& detection : step.detections) unassigned_.observe(detection);
   if (jointlyAssigned() || options_.decideOnTrueHistory) {
     // (docs/association-front-end.md, §1-4): every candidate of the step against the marginal from before it,
     // then one joint assignment with the unassigned hypothesis (applied by completeStep, or only recorded).
-    for (const Detection& detection : step.detections) unassigned_.observe(detection);
     for (std::size_t r = pending.first; r < records_.size(); ++r) {
       findCandidatesWithUnassigned(pending.marginal ? &*pending.marginal : nullptr, pending.considered, records_[r]);
     }
@@ -1162,8 +1163,7 @@ std::pair<std::optional<int>, double> SemanticSlam::chosenAssociation(const Dete
                                                                       const Values& estimate) const {
   if (record.knownLandmark) return {*record.knownLandmark, 1.0};
   if (record.createdLandmark) return {*record.createdLandmark, 1.0};
-  if (record.rejected) return {std::nullopt, 1.0};  // its provisional landmark was dropped (§5)
-  if (record.candidates.empty()) return {std::nullopt, 1.0};  // `known`: clutter, no factor
+  if (record.onNoFactor()) return {std::nullopt, 1.0};
   if (record.mixture) {
     const auto& mixture = static_cast<const MaxMixtureFactor&>(*record.mixture);
     const int active = mixture.activeComponent(estimate);

@@ -174,6 +174,11 @@ struct DetectionRecord {
   /// or an object not mapped before this step: unassigned is the right decision).
   std::optional<int> decided;
   std::optional<int> rightDecision;
+
+  /// Whether no factor of the graph holds the detection: the provisional landmark it started was dropped (§5), or
+  /// it has no landmark to be on (`known`'s clutter; a detection whose every candidate was taken away). Not a
+  /// detection on a mixture's null component, which a factor holds.
+  bool onNoFactor() const { return rejected || (candidates.empty() && !createdLandmark && !knownLandmark); }
 };
 
 class SemanticSlam {
