@@ -174,12 +174,15 @@ TEST(RunCommand, OnTrueHistoryScoresTheFrontEndsDecisionsOnKnownsGraph) {
     }
   }
   int detections = 0;
-  for (const auto& step : semslam::readMeasurementLog(log.string()).steps) detections += static_cast<int>(step.detections.size());
+  for (const auto& step : semslam::readMeasurementLog(log.string()).steps) {
+    detections += static_cast<int>(step.detections.size());
+  }
   EXPECT_EQ(rows, detections);
   ASSERT_GT(real, 0);
   EXPECT_DOUBLE_EQ(metrics["decision_accuracy_real"].get<double>(), static_cast<double>(right) / real);
   if (clutter > 0) {
-    EXPECT_DOUBLE_EQ(metrics["decision_clutter_rejected"].get<double>(), static_cast<double>(clutterRejected) / clutter);
+    EXPECT_DOUBLE_EQ(metrics["decision_clutter_rejected"].get<double>(),
+                     static_cast<double>(clutterRejected) / clutter);
   }
   // A run that decides for itself reports no decision metrics and writes no decisions.csv.
   std::ifstream knownMetrics(dir / "known" / "metrics.json");

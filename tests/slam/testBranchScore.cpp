@@ -47,20 +47,25 @@ Detection detection(const Point2& position, const Matrix& covariance, int label,
   return d;
 }
 
-/// A run with `known` association of two detections from the same pose, labelled 0 and 1, of objects `firstId`
-/// and `secondId`.
-double scoreOf(int firstId, int secondId) {
+/// A `known` run whose first step sees `first` and whose second step sees `second`, both from the same pose.
+double scoreOfTwoSteps(const LogHeader& h, const Detection& first, const Detection& second) {
   SemanticSlamOptions options;
   options.strategy = AssociationStrategy::Known;
-  SemanticSlam run(header(), options);
-  TimeStep first, second;
-  first.detections.push_back(detection(kFirst, kFirstCovariance, 0, firstId));
-  second.time = 1.0;
-  second.odometry = Odometry{SE2(), 1e-16 * Matrix::Identity(3, 3)};
-  second.detections.push_back(detection(kSecond, kSecondCovariance, 1, secondId));
-  run.addStep(first);
-  run.addStep(second);
+  SemanticSlam run(h, options);
+  TimeStep one, two;
+  one.detections.push_back(first);
+  two.time = 1.0;
+  two.odometry = Odometry{SE2(), 1e-16 * Matrix::Identity(3, 3)};
+  two.detections.push_back(second);
+  run.addStep(one);
+  run.addStep(two);
   return branchScore(run);
+}
+
+/// Two detections, labelled 0 and 1, of objects `firstId` and `secondId`.
+double scoreOf(int firstId, int secondId) {
+  return scoreOfTwoSteps(header(), detection(kFirst, kFirstCovariance, 0, firstId),
+                         detection(kSecond, kSecondCovariance, 1, secondId));
 }
 
 TEST(BranchScore, OneObjectAgainstTwoIsTheMergeTest) {
@@ -75,29 +80,14 @@ TEST(BranchScore, OneObjectAgainstTwoIsTheMergeTest) {
   EXPECT_NEAR(scoreOf(0, 0) - scoreOf(0, 1), expected, 1e-6);
 }
 
-/// A `known` run whose first step sees object 0 and whose second step sees one detection `second` (labelled 1).
-double scoreWithSecond(const LogHeader& h, const Detection& first, const Detection& second) {
-  SemanticSlamOptions options;
-  options.strategy = AssociationStrategy::Known;
-  SemanticSlam run(h, options);
-  TimeStep one, two;
-  one.detections.push_back(first);
-  two.time = 1.0;
-  two.odometry = Odometry{SE2(), 1e-16 * Matrix::Identity(3, 3)};
-  two.detections.push_back(second);
-  run.addStep(one);
-  run.addStep(two);
-  return branchScore(run);
-}
-
 // A detection that no factor holds (here `known`'s clutter) is explained by the unassigned density λ(z); a landmark
 // seen once explains its detection as well as that: its Gaussian integrates to the Jacobian of the back-projection,
 // and its prior is ρ, so together ρ·|J| = λ(z). The two scores are equal, for a relative-position sensor (λ = ρ) and
 // for range-bearing (λ = ρ r): without the λ term the clutter would score 2 ln(1/λ) lower (15.9 and 8.6 here).
 TEST(BranchScore, ADetectionOnNoFactorScoresAsALandmarkSeenOnce) {
   const Detection first = detection(kFirst, kFirstCovariance, 0, 0);
-  EXPECT_NEAR(scoreWithSecond(header(), first, detection(kSecond, kSecondCovariance, 1, 1)),
-              scoreWithSecond(header(), first, detection(kSecond, kSecondCovariance, 1, kNotALandmark)), 1e-6);
+  EXPECT_NEAR(scoreOfTwoSteps(header(), first, detection(kSecond, kSecondCovariance, 1, 1)),
+              scoreOfTwoSteps(header(), first, detection(kSecond, kSecondCovariance, 1, kNotALandmark)), 1e-6);
 
   LogHeader rangeBearing = header();
   rangeBearing.sensor.kind = SensorKind::RangeBearing;
@@ -107,7 +97,7 @@ TEST(BranchScore, ADetectionOnNoFactorScoresAsALandmarkSeenOnce) {
   const Detection far = detection(Point2(7.5, -0.2), noise, 1, 1);  // range 7.5 m, bearing −0.2 rad
   Detection clutter = far;
   clutter.truthId = kNotALandmark;
-  EXPECT_NEAR(scoreWithSecond(rangeBearing, near, far), scoreWithSecond(rangeBearing, near, clutter), 1e-6);
+  EXPECT_NEAR(scoreOfTwoSteps(rangeBearing, near, far), scoreOfTwoSteps(rangeBearing, near, clutter), 1e-6);
 }
 
 }  // namespace
