@@ -127,7 +127,8 @@ TEST(RunCommand, MaxMixtureMethodsWriteTheRunFolderAndMetrics) {
 TEST(RunCommand, OnTrueHistoryScoresTheFrontEndsDecisionsOnKnownsGraph) {
   const fs::path dir = freshDirectory("semslam_run_true_history");
   const fs::path log = dir / "run.jsonl";
-  ASSERT_EQ(runSemslam("simulate semantic --steps 30 --seed 4 --out \"" + log.string() + "\"").exitCode, 0);
+  ASSERT_EQ(runSemslam("simulate semantic --steps 30 --seed 4 --clutter 0.3 --out \"" + log.string() + "\"").exitCode,
+            0);
   const std::string in = " --in \"" + log.string() + "\" --no-covariances --out \"";
   ASSERT_EQ(runSemslam("run --method known" + in + (dir / "known").string() + "\"").exitCode, 0);
   const auto result = runSemslam("run --method mm-nh --on-true-history" + in + (dir / "decided").string() + "\"");
@@ -180,10 +181,8 @@ TEST(RunCommand, OnTrueHistoryScoresTheFrontEndsDecisionsOnKnownsGraph) {
   EXPECT_EQ(rows, detections);
   ASSERT_GT(real, 0);
   EXPECT_DOUBLE_EQ(metrics["decision_accuracy_real"].get<double>(), static_cast<double>(right) / real);
-  if (clutter > 0) {
-    EXPECT_DOUBLE_EQ(metrics["decision_clutter_rejected"].get<double>(),
-                     static_cast<double>(clutterRejected) / clutter);
-  }
+  ASSERT_GT(clutter, 0);  // the log's clutter (--clutter 0.3): the file's rejections against the metric
+  EXPECT_DOUBLE_EQ(metrics["decision_clutter_rejected"].get<double>(), static_cast<double>(clutterRejected) / clutter);
   // A run that decides for itself reports no decision metrics and writes no decisions.csv.
   std::ifstream knownMetrics(dir / "known" / "metrics.json");
   EXPECT_TRUE(nlohmann::json::parse(knownMetrics)["decision_accuracy_real"].is_null());
