@@ -16,6 +16,7 @@ import sys
 import tempfile
 
 import plot_hybrid
+import results_assignment_score
 import results_association
 import results_association_oracles
 import results_association_ceiling
@@ -316,7 +317,8 @@ def bounded_memory_lines(semslam, data, scratch, litw):
 SECTIONS = ["pose-graphs", "evo", "datasets", "hybrid", "hybrid-mrclam", "hybrid-scaling", "max-mixtures",
             "robustness", "association", "association-oracles", "association-ceiling", "association-defaults",
             "loop-closure-branches",
-            "loop-closure-next-best", "loop-closure-open-splits", "kitti-tracking", "back-ends", "studies-mpi"]
+            "loop-closure-next-best", "loop-closure-open-splits", "assignment-score", "kitti-tracking", "back-ends",
+            "studies-mpi"]
 
 
 def section_lines(name, semslam, data, scratch):
@@ -355,6 +357,9 @@ def section_lines(name, semslam, data, scratch):
     elif name == "loop-closure-open-splits":
         body = results_loop_closure_open_splits.loop_closure_open_splits_section(semslam, data, scratch,
                                                                                  lambda command: shown(command, data))
+    elif name == "assignment-score":
+        body = results_assignment_score.assignment_score_section(semslam, data, scratch,
+                                                                 lambda command: shown(command, data))
     elif name == "kitti-tracking":
         body = results_kitti_tracking.kitti_tracking_section(semslam, data, scratch,
                                                              lambda command: shown(command, data), sys.executable)

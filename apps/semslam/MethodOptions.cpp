@@ -97,6 +97,15 @@ void addSemanticSlamOptions(CLI::App* command, SemanticSlamOptions& options) {
                       "above which a pairing closes a loop")
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
+  command
+      ->add_option_function<std::string>(
+          "--assignment-score",
+          [&options](const std::string& name) { options.assignmentScore = parseAssignmentScore(name); },
+          "birth unassigned: how a step's joint assignment scores its detections' pairings: independent (each by "
+          "its own likelihood, Hungarian) or joint (by the joint density of their innovations, which share the "
+          "pose's error: joint compatibility branch and bound; docs/association-front-end.md §4)")
+      ->check(CLI::IsMember({"independent", "joint"}))
+      ->default_str("independent");
   command->add_option("--warm-start-posterior", options.warmStartMinimumPosterior,
                       "mm, mm-nh: warm-start a detection only on a candidate of at least this posterior "
                       "(0: every detection; docs/association-front-end.md)")

@@ -37,7 +37,15 @@ void printSummary(const RunArguments& arguments, const MeasurementLog& log, cons
                 m.errWmax, m.timeSeconds);
     const std::string bounds = describeBoundsThatBound(run.hybridReports, arguments.run.options.hybrid);
     if (!bounds.empty()) std::fprintf(stderr, "note: %s\n", bounds.c_str());
-  } else if (!run.result.historyDecisions.empty()) {
+    return;
+  }
+  if (run.jointSearchesStopped > 0) {
+    std::fprintf(stderr,
+                 "note: the joint assignment search stopped at its budget on %d step(s), each keeping the best "
+                 "assignment it had found (docs/association-front-end.md §4)\n",
+                 run.jointSearchesStopped);
+  }
+  if (!run.result.historyDecisions.empty()) {
     // Decisions on the true history: the graph's associations are the truth's (DA accuracy 1); the decisions are
     // the figure (docs/association-front-end.md §8b).
     std::printf("%s: decisions right %.4f of true-landmark detections (elsewhere %lld, unassigned %lld, first "

@@ -347,12 +347,38 @@ TEST(RunCommand, LoopClosureBranchesAreListedInBranchesCsv) {
         "--method ml --switch-rounds 5", "--method mm --smoother batch --switch-rounds 5",
         "--method mm-nh --switch-rounds -1",
         // The null escape window (SemanticSlam.h): seconds >= 0, and the escape it widens on.
-        "--method mm-nh --null-escape-window -1", "--method mm-nh --no-null-escape --null-escape-window 1"}) {
+        "--method mm-nh --null-escape-window -1", "--method mm-nh --no-null-escape --null-escape-window 1",
+        // The joint assignment score (SemanticSlam.h): a step assignment to score, and a known name.
+        "--method known --assignment-score joint", "--method mm-nh --birth threshold --assignment-score joint",
+        "--method mm-nh --assignment-score hungarian"}) {
     EXPECT_EQ(runSemslam("run " + flags + " --in \"" + log.string() + "\" --out \"" + (dir / "bad").string() + "\"")
                   .exitCode,
               2)
         << flags;
   }
+  fs::remove_all(dir);
+}
+
+TEST(RunCommand, TheAssignmentScoreIsIndependentByDefaultAndJointOnRequest) {
+  const fs::path dir = fs::temp_directory_path() / "semslam_cli_assignment_score";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path log = dir / "log.jsonl";
+  ASSERT_EQ(runSemslam("simulate semantic --steps 60 --seed 14 --odom-noise-scale 3 --out \"" + log.string() + "\"")
+                .exitCode,
+            0);
+  const auto run = [&](const std::string& name, const std::string& flags) {
+    const fs::path folder = dir / name;
+    const auto result = runSemslam("run --method mm-nh " + flags + " --in \"" + log.string() + "\" --out \"" +
+                                   folder.string() + "\"");
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    return folder;
+  };
+  const fs::path byDefault = run("default", ""), independent = run("independent", "--assignment-score independent");
+  const fs::path joint = run("joint", "--assignment-score joint");
+  EXPECT_EQ(fileText(byDefault / "associations.csv"), fileText(independent / "associations.csv"));
+  EXPECT_EQ(fileText(byDefault / "trajectory.tum"), fileText(independent / "trajectory.tum"));
+  EXPECT_TRUE(fs::exists(joint / "metrics.json"));
   fs::remove_all(dir);
 }
 

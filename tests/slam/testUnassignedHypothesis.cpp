@@ -1,11 +1,13 @@
 // The unassigned hypothesis and the joint assignment of paper B's front end (docs/association-front-end.md):
-// its density against the closed form, the switch point d*(S, λ) through the whole front end, and exclusion (two
-// detections of one step never share a landmark).
+// its density against the closed form, the switch point d*(S, λ) through the whole front end, exclusion (two
+// detections of one step never share a landmark), and the joint assignment score (§4, "Joint compatibility").
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <vector>
 
 #include "semslam/association/UnassignedHypothesis.h"
 #include "semslam/slam/SemanticSlam.h"
@@ -129,6 +131,78 @@ TEST(UnassignedHypothesis, TwoDetectionsOfOneStepNeverShareALandmark) {
     EXPECT_TRUE(!first || !second || *first != *second) << strategyName(strategy);
     EXPECT_EQ(slam.landmarks(), 2) << strategyName(strategy);  // the second detection started a landmark
   }
+}
+
+/// Two mapped landmarks 4 m apart, a pose known to 10 m, and a step that sees both 5 m off where the estimate puts
+/// them (the same 5 m for both: the pose's error). Each pairing alone has a density below the unassigned density,
+/// so the independent score starts two new landmarks; the joint score pays the pose's uncertainty once and pairs
+/// both, each with its own landmark.
+struct TwoLandmarksUnderABroadPose {
+  MeasurementLog log;
+  SE2 estimated{0.0, 0.0, 0.0};
+  Vector2 poseError{3.0, -4.0};
+  std::vector<Point2> landmarks{Point2(6.0, 0.0), Point2(6.0, 4.0)};
+
+  TwoLandmarksUnderABroadPose() {
+    log.header.sensor.kind = SensorKind::RelativePosition;
+    log.header.sensor.maxRange = 10.0;
+    log.header.sensor.fieldOfView = std::numbers::pi;
+    log.header.initialPose = PosePrior{estimated, Vector3(100.0, 100.0, 1e-8).asDiagonal().toDenseMatrix()};
+    for (int j = 0; j < 2; ++j) log.header.landmarkPriors.push_back({j, landmarks[j], 0.01 * Matrix::Identity(2, 2)});
+  }
+
+  SemanticSlam run(AssignmentScore score) const {
+    SemanticSlamOptions options;
+    options.strategy = AssociationStrategy::MaximumLikelihood;
+    options.assignmentScore = score;
+    SemanticSlam slam(log.header, options);
+    const SE2 truth(poseError.x(), poseError.y(), 0.0);
+    slam.addStep(TimeStep{0.0, std::nullopt, {}, truth});
+    std::vector<Detection> detections;
+    for (int j = 0; j < 2; ++j) {
+      Detection d;
+      d.geometry = truth.transformTo(landmarks[j]);
+      d.covariance = 0.01 * Matrix::Identity(2, 2);
+      d.truthId = j;
+      detections.push_back(d);
+    }
+    slam.addStep(TimeStep{1.0, Odometry{SE2(), Vector3(1e-4, 1e-4, 1e-8).asDiagonal().toDenseMatrix()}, detections,
+                          truth});
+    return slam;
+  }
+};
+
+TEST(UnassignedHypothesis, TheJointScorePairsReSightingsThatEachAloneWouldLeaveUnassigned) {
+  const TwoLandmarksUnderABroadPose setup;
+  const SemanticSlam independent = setup.run(AssignmentScore::Independent);
+  for (int j = 0; j < 2; ++j) {
+    const DetectionRecord& record = independent.detections().at(static_cast<std::size_t>(j));
+    EXPECT_FALSE(record.assigned) << "detection " << j;
+    EXPECT_TRUE(record.createdLandmark) << "detection " << j;
+  }
+  const SemanticSlam joint = setup.run(AssignmentScore::Joint);
+  for (int j = 0; j < 2; ++j) {
+    EXPECT_EQ(joint.detections().at(static_cast<std::size_t>(j)).assigned, std::optional<int>(j)) << "detection " << j;
+  }
+  EXPECT_EQ(joint.landmarks(), 2);
+  // The pose moves onto the truth (within the detections' noise).
+  const SE2 pose = joint.smoother().estimate<SE2>(poseKey(1));
+  EXPECT_NEAR(pose.translation().x(), setup.poseError.x(), 0.2);
+  EXPECT_NEAR(pose.translation().y(), setup.poseError.y(), 0.2);
+}
+
+TEST(UnassignedHypothesis, TheJointScoreNeedsAStrategyThatDecidesAndTheUnassignedRule) {
+  const TwoLandmarksUnderABroadPose setup;
+  SemanticSlamOptions options;
+  options.assignmentScore = AssignmentScore::Joint;
+  options.strategy = AssociationStrategy::Known;
+  EXPECT_THROW(SemanticSlam(setup.log.header, options), std::invalid_argument);
+  options.strategy = AssociationStrategy::MaxMixtureNullHypothesis;
+  options.birth = BirthRule::Threshold;
+  EXPECT_THROW(SemanticSlam(setup.log.header, options), std::invalid_argument);
+  EXPECT_EQ(parseAssignmentScore("joint"), AssignmentScore::Joint);
+  EXPECT_EQ(assignmentScoreName(parseAssignmentScore("independent")), "independent");
+  EXPECT_THROW(parseAssignmentScore("hungarian"), std::invalid_argument);
 }
 
 }  // namespace

@@ -39,6 +39,7 @@ void runSemanticSlam(const MeasurementLog& log, const MethodOptions& options, co
   run.result = slam.result(options.poseCovariances);
   run.result.timeSeconds = secondsSince(start);
   run.factors = slam.smoother().factors().size();
+  run.jointSearchesStopped = slam.jointSearchesStopped();
   if (options.keepFinalGraph) {
     run.finalGraph = slam.smoother().factors();
     run.finalEstimate = slam.smoother().estimate();

@@ -62,6 +62,7 @@ struct MethodRun {
   RunEvaluation evaluation;  ///< scored against the log's truth
   RunOutput output;          ///< the run folder's contents (when options.runFolder)
   std::size_t factors = 0;   ///< paper B: factors in the final graph
+  int jointSearchesStopped = 0;  ///< paper B, AssignmentScore::Joint: steps whose search stopped at its budget
   FactorGraph finalGraph;    ///< paper B, with options.keepFinalGraph: the smoother's factors at the end
   Values finalEstimate;      ///< ... and its estimate (every pose k under poseKey(k))
   std::vector<HybridStepReport> hybridReports;      ///< paper A: what the update did at every step

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "semslam/association/JointCompatibility.h"
 #include "semslam/association/LandmarkSplit.h"
 #include "semslam/association/MarginalLikelihood.h"
 #include "semslam/factors/MaxMixtureFactor.h"
@@ -66,6 +67,16 @@ BirthRule parseBirthRule(const std::string& name) {
 
 std::string birthRuleName(BirthRule rule) { return rule == BirthRule::Threshold ? "threshold" : "unassigned"; }
 
+AssignmentScore parseAssignmentScore(const std::string& name) {
+  if (name == "independent") return AssignmentScore::Independent;
+  if (name == "joint") return AssignmentScore::Joint;
+  throw std::invalid_argument("unknown assignment score \"" + name + "\" (independent, joint)");
+}
+
+std::string assignmentScoreName(AssignmentScore score) {
+  return score == AssignmentScore::Independent ? "independent" : "joint";
+}
+
 int SemanticSlam::bestCandidate(const DetectionRecord& record) {
   if (record.assigned) {
     const auto found = std::find(record.candidates.begin(), record.candidates.end(), *record.assigned);
@@ -96,6 +107,11 @@ SemanticSlam::SemanticSlam(const LogHeader& header, SemanticSlamOptions options)
       (options_.strategy == AssociationStrategy::Known || options_.birth != BirthRule::Unassigned)) {
     throw std::invalid_argument("decisions on the true history need a strategy that decides (not known) and the "
                                 "unassigned birth rule, whose joint assignment is the decision");
+  }
+  if (options_.assignmentScore == AssignmentScore::Joint &&
+      (options_.strategy == AssociationStrategy::Known || options_.birth != BirthRule::Unassigned)) {
+    throw std::invalid_argument("the joint assignment score needs a strategy that decides (not known) and the "
+                                "unassigned birth rule, whose step assignment it scores");
   }
 }
 
@@ -461,13 +477,17 @@ void SemanticSlam::findCandidates(const JointMarginal& marginal, const std::vect
   if (!record.candidates.empty()) record.weights = normalizeLogWeights(logWeights);
 }
 
-void SemanticSlam::findCandidatesWithUnassigned(const JointMarginal* marginal, const std::vector<int>& considered,
-                                                DetectionRecord& record) const {
+double SemanticSlam::labelPrior(const DetectionRecord& record) {
   // P₀(s): the label's predictive under the uniform class prior (1 without semantics). A label that every class
   // rules out (all likelihoods 0, e.g. an exact model) carries no usable information: it counts as uninformative
   // here, and every landmark's predictive of it is 0, so the detection is unassigned.
-  double labelPrior = record.semanticLikelihoods.size() > 0 ? record.semanticLikelihoods.mean() : 1.0;
-  if (!(labelPrior > 0.0) || !std::isfinite(labelPrior)) labelPrior = 1.0;
+  const double prior = record.semanticLikelihoods.size() > 0 ? record.semanticLikelihoods.mean() : 1.0;
+  return prior > 0.0 && std::isfinite(prior) ? prior : 1.0;
+}
+
+void SemanticSlam::findCandidatesWithUnassigned(const JointMarginal* marginal, const std::vector<int>& considered,
+                                                DetectionRecord& record) const {
+  const double labelPrior = SemanticSlam::labelPrior(record);
   record.unassignedLogLikelihood = unassigned_.logDensity(record.measurement) + std::log(labelPrior);  // (§1)
   if (!marginal) return;
   const SharedNoiseModel noise = factory_.detectionNoise(record.measurement);
@@ -486,6 +506,43 @@ void SemanticSlam::findCandidatesWithUnassigned(const JointMarginal* marginal, c
 }
 
 std::vector<int> SemanticSlam::jointAssignment(std::size_t first) const {
+  const std::vector<int> independent = independentAssignment(first);
+  // One detection's joint density is its own: the search would return the independent assignment.
+  if (options_.assignmentScore != AssignmentScore::Joint || !pending_ || !pending_->marginal ||
+      records_.size() - first < 2) {
+    return independent;
+  }
+  // (§4, "Joint compatibility") The same hypotheses scored by the joint density of the pairings' innovations.
+  std::vector<JointAssignmentRow> rows;
+  for (std::size_t r = first; r < records_.size(); ++r) {
+    const DetectionRecord& record = records_[r];
+    JointAssignmentRow& row = rows.emplace_back();
+    row.candidates = record.candidates;
+    for (int j : record.candidates) {
+      row.labelLogLikelihoods.push_back(std::log(landmarks_[j].classBelief.predictive(record.semanticLikelihoods)));
+    }
+    row.unassignedLogLikelihood = record.unassignedLogLikelihood;
+    row.labelPriorLogLikelihood = std::log(labelPrior(record));
+    row.logNormalizer = factory_.detectionNoise(record.measurement)->logNormalizer();
+  }
+  const Key pose = poseKeys_.back();
+  const JointDensity density = [&](const std::vector<std::pair<std::size_t, int>>& pairings) {
+    std::vector<FactorPtr> factors;
+    std::vector<Key> keys = {pose};
+    for (const auto& [row, landmark] : pairings) {
+      const Detection& detection = records_[first + row].measurement;
+      factors.push_back(factory_.detectionFactor(pose, landmarks_[landmark].key, detection,
+                                                 factory_.detectionNoise(detection)));
+      keys.push_back(landmarks_[landmark].key);
+    }
+    return linearizedLikelihood(factors, smoother_->estimate(), pending_->marginal->restrictedTo(keys));
+  };
+  const JointAssignment found = jointlyCompatibleAssignment(rows, density, gate_, independent);
+  if (!found.exhaustive) ++jointSearchesStopped_;
+  return found.landmarkOfRow;
+}
+
+std::vector<int> SemanticSlam::independentAssignment(std::size_t first) const {
   // (§4) Rows: the step's detections. Columns: every landmark some detection gated, then one unassigned column per
   // detection, open to that detection only. Weights: log-likelihoods; the maximum-weight assignment is the most
   // likely joint association with at most one detection per landmark.

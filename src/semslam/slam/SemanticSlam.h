@@ -15,7 +15,9 @@
 //      normalised over the candidates. No candidate: z starts a new landmark at its back-projection from x̄_k;
 //      with BirthRule::Unassigned (docs/association-front-end.md) the gate is the joint geometric × semantic one,
 //      every detection also has the unassigned hypothesis (UnassignedHypothesis.h), and the step's detections are
-//      assigned jointly, at most one per landmark (Hungarian); an unassigned detection starts a new landmark
+//      assigned jointly, at most one per landmark (Hungarian on each pairing's own likelihood; with
+//      AssignmentScore::Joint, the joint density of the step's pairings, JointCompatibility.h); an unassigned
+//      detection starts a new landmark
 //      (a posed landmark seen by a position-only sensor also gets a prior of σ = π on its orientation, which
 //      nothing else observes, and an uninformative one on its position, so the system stays positive definite);
 //   3. the strategy's factors (AssociationStrategy.h): mm builds a MaxMixtureFactor with components w_l; mm-nh adds
@@ -105,6 +107,18 @@ enum class BirthRule {
 BirthRule parseBirthRule(const std::string& name);
 std::string birthRuleName(BirthRule rule);
 
+/// How the joint assignment of a step (BirthRule::Unassigned) scores an association of its detections
+/// (docs/association-front-end.md §4).
+enum class AssignmentScore {
+  Independent,  ///< each pairing by its own marginal density, the product maximised by the Hungarian algorithm
+  Joint,        ///< the pairings by the joint density of their stacked innovations, which share the pose's error
+                ///< (association/JointCompatibility.h: joint compatibility branch and bound; opt-in)
+};
+
+/// "independent" | "joint"; anything else throws std::invalid_argument.
+AssignmentScore parseAssignmentScore(const std::string& name);
+std::string assignmentScoreName(AssignmentScore score);
+
 struct SemanticSlamOptions {
   AssociationStrategy strategy = AssociationStrategy::MaxMixtureNullHypothesis;
   BirthRule birth = BirthRule::Unassigned;  ///< the default since issue 10 (docs/association-front-end.md §9)
@@ -131,6 +145,9 @@ struct SemanticSlamOptions {
   /// closure); 0: never, two or more on null as in §6b (docs/association-front-end.md §6c; opt-in)
   double nullEscapeWindow = 0.0;
   double anchoringInformation = 2.0;  ///< §10: a pairing anchors when ½ ln det(S R⁻¹) exceeds this (nats)
+  /// BirthRule::Unassigned: how the step's joint assignment scores an association (§4; AssignmentScore::Joint
+  /// needs a strategy that decides, not known)
+  AssignmentScore assignmentScore = AssignmentScore::Independent;
   /// §10 (LoopClosureBranches.h): steps a second branch is kept open after an anchoring step before the better one
   /// is kept; 0: no branches. Unset: LoopClosureBranches::kDefaultWindow where branches apply (BirthRule::Unassigned
   /// with ml, mm or mm-nh), none elsewhere.
@@ -220,6 +237,9 @@ class SemanticSlam {
   bool pairElsewhere(const std::vector<std::size_t>& records);
 
   const Smoother& smoother() const { return *smoother_; }
+  /// AssignmentScore::Joint: the joint assignments (this run's and its branches' before it forked) whose search
+  /// stopped at its budget (kDefaultJointEvaluations) and kept the best assignment it had found.
+  int jointSearchesStopped() const { return jointSearchesStopped_; }
   int steps() const { return static_cast<int>(poseKeys_.size()); }
   /// Landmark variables ever created (dropped and merged ones included: indices are never reused).
   int landmarks() const { return static_cast<int>(landmarks_.size()); }
@@ -294,8 +314,13 @@ class SemanticSlam {
   /// right one beside each, not applied.
   void recordDecisions(std::size_t first, const std::vector<int>& decided);
   /// BirthRule::Unassigned: the landmark each of the step's records (from `first`) is assigned, jointly, one
-  /// detection per landmark (§4); −1: unassigned.
+  /// detection per landmark (§4); −1: unassigned. Under AssignmentScore::Joint, jointlyCompatibleAssignment seeded
+  /// with the independent one.
   std::vector<int> jointAssignment(std::size_t first) const;
+  /// P₀(s), the record's label's predictive under the uniform class prior (§1, §3; 1 without semantics).
+  static double labelPrior(const DetectionRecord& record);
+  /// (§4) The maximum of the product of each record's own likelihood (Hungarian).
+  std::vector<int> independentAssignment(std::size_t first) const;
   /// The assignment applied: the records' assigned landmarks and, by exclusion, their remaining candidates.
   void applyJointAssignment(std::size_t first, const std::vector<int>& assignedLandmark);
   /// The factors of one detection with candidates under the strategy (step 3).
@@ -393,6 +418,7 @@ class SemanticSlam {
   std::vector<double> stepTimes_;
   /// Per record: onNullComponent's last choice and its reach (§6b).
   mutable MixtureChoiceCache nullChecks_;
+  mutable int jointSearchesStopped_ = 0;  // jointAssignment's, for jointSearchesStopped()
   /// A step between beginStep and completeStep.
   struct PendingStep {
     double time = 0.0;
