@@ -63,8 +63,8 @@ struct PlanarProblem {
 };
 
 /// Every exclusive assignment, each admissible only if every prefix of its pairings (in row order) passes the joint
-/// gate (χ² − 2 Σ ln(P(s | j) / P₀(s))), the best by the score of the header (the incumbent kept on a tie; the random problems below have no other
-/// ties).
+/// gate (χ² − 2 Σ ln(P(s | j) / P₀(s))), the best by the score of the header (the incumbent kept on a tie; the
+/// random problems below have no other ties).
 std::pair<std::vector<int>, double> enumerate(const PlanarProblem& problem, const AssociationGate& gate,
                                               const std::vector<int>& incumbent) {
   const std::size_t rows = problem.rows.size();
@@ -142,9 +142,8 @@ PlanarProblem randomProblem(std::mt19937& rng, int landmarkCount, int rowCount) 
     problem.measurements.push_back(source - poseError + sigma * Vector2(normal(rng), normal(rng)));
     JointAssignmentRow row;
     for (int j = 0; j < landmarkCount; ++j) {
-      if ((problem.measurements.back() - problem.landmarks[static_cast<std::size_t>(j)]).norm() > 3.0 * poseSigma + 2.0) {
-        continue;
-      }
+      const Vector offset = problem.measurements.back() - problem.landmarks[static_cast<std::size_t>(j)];
+      if (offset.norm() > 3.0 * poseSigma + 2.0) continue;
       row.candidates.push_back(j);
       row.labelLogLikelihoods.push_back(std::log(0.2 + 0.8 * unit(rng)));
     }
@@ -234,7 +233,7 @@ TEST(JointCompatibility, RefusesInconsistentProblems) {
   const JointDensity density = problem.densityFunction();
   EXPECT_THROW(jointlyCompatibleAssignment(problem.rows, density, gate, {-1}), std::invalid_argument);  // size
   EXPECT_THROW(jointlyCompatibleAssignment(problem.rows, density, gate, {0, 0}), std::invalid_argument);  // twice
-  EXPECT_THROW(jointlyCompatibleAssignment(problem.rows, density, gate, {2, -1}), std::invalid_argument);  // no candidate
+  EXPECT_THROW(jointlyCompatibleAssignment(problem.rows, density, gate, {2, -1}), std::invalid_argument);  // not one
   EXPECT_THROW(jointlyCompatibleAssignment(problem.rows, density, gate, {-1, -1}, 0), std::invalid_argument);  // budget
   problem.rows[1].labelLogLikelihoods.pop_back();
   EXPECT_THROW(jointlyCompatibleAssignment(problem.rows, density, gate, {-1, -1}), std::invalid_argument);

@@ -11,9 +11,9 @@
 // u_i the unassigned hypothesis's log-likelihood (§1, its label's prior included), s_ij = ln P(s_i | j) the label's
 // predictive under landmark j's class belief, and N(ν_P; 0, S_P) the linearised joint density of the stacked
 // innovations of the pairings (MarginalLikelihood.h: S_P = H Σ Hᵀ + R over the pose and the paired landmarks). The
-// independent score, the Hungarian assignment's (SemanticSlam::jointAssignment), takes Π_i N(ν_i; 0, S_i) instead,
-// which counts the pose's uncertainty once per pairing: under a broad prediction each re-sighting alone loses to
-// the unassigned hypothesis while two together, whose innovations agree on one pose correction, win.
+// independent score, the Hungarian assignment's (SemanticSlam::independentAssignment), takes Π_i N(ν_i; 0, S_i)
+// instead, which counts the pose's uncertainty once per pairing: under a broad prediction each re-sighting alone
+// loses to the unassigned hypothesis while two together, whose innovations agree on one pose correction, win.
 // An assignment is admissible when its pairings pass the joint gate of §3 stacked, χ²_P − 2 Σ_{i ∈ P} ln(P(s_i | j) /
 // P₀(s_i)) at most the gate's χ² quantile at the stacked dimension (χ²_P the stacked innovation's; P₀ the label's
 // predictive under the uniform class prior), as must each prefix of them met on the way (JCBB's joint
