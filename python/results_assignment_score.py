@@ -1,12 +1,12 @@
 """docs/results.md section `assignment-score`: the step's joint assignment scored by the joint density of its
-pairings' innovations (`--assignment-score joint`, joint compatibility branch and bound; docs/association-front-end.md
-§4) against the independent score (the default: each pairing by its own likelihood, Hungarian), on every log family
-of the loop-closure window sweep (results_loop_closure_branches.py: MRCLAM Dataset 6 robots 1-5 × label seeds 1-3,
-KITTI tracking 0000-0010 at 1 Hz ×5, Lost in the Woods, the KITTI 00 and 07 simulations with seeds 1-8). Two tables:
-whole runs (`mm-nh` with its defaults, then with the joint score), and the front end's decisions on the true
-history (`--on-true-history`, docs/association-front-end.md §8b: every decision taken on a history without error,
-so the two scores are compared decision for decision, free of the path a run's own errors take). Every cell comes
-from the runs' metrics.json. Used by make_results.py.
+pairings' innovations (joint compatibility branch and bound, the default since session 33;
+docs/association-front-end.md §4) against the independent score (`--assignment-score independent`: each pairing by
+its own likelihood, Hungarian), on every log family of the loop-closure window sweep (results_loop_closure_branches.py:
+MRCLAM Dataset 6 robots 1-5 × label seeds 1-3, KITTI tracking 0000-0010 at 1 Hz ×5, Lost in the Woods, the KITTI 00
+and 07 simulations with seeds 1-8). Two tables: whole runs (`mm-nh` with the independent score, then with its
+defaults), and the front end's decisions on the true history (`--on-true-history`, docs/association-front-end.md §8b:
+every decision taken on a history without error, so the two scores are compared decision for decision, free of the
+path a run's own errors take). Every cell comes from the runs' metrics.json. Used by make_results.py.
 """
 import os
 
@@ -14,10 +14,11 @@ from results_commands import mean_cell, read_metrics
 from results_loop_closure_branches import NO_LOGS, compare_variants
 from results_loop_closure_next_best import comparison_table, kept_counts
 
-JOINT = ["--assignment-score", "joint"]
+INDEPENDENT = ["--assignment-score", "independent"]
 TRUE_HISTORY = ["--on-true-history"]
-VARIANTS = [("independent (the default)", []), ("joint", JOINT),
-            ("independent, on the true history", TRUE_HISTORY), ("joint, on the true history", JOINT + TRUE_HISTORY)]
+VARIANTS = [("independent", INDEPENDENT), ("joint (the default)", []),
+            ("independent, on the true history", INDEPENDENT + TRUE_HISTORY),
+            ("joint, on the true history", TRUE_HISTORY)]
 WHOLE_RUNS = VARIANTS[:2]
 DECISIONS = [("decision_accuracy_real", 3), ("decision_clutter_rejected", 3),
              ("decisions_resighting_elsewhere", 1), ("decisions_resighting_unassigned", 1),
@@ -49,7 +50,7 @@ def assignment_score_section(semslam, data, scratch, shown):
     if runs is None:
         return lines + [NO_LOGS, ""]
     families, folders = runs
-    lines += ["Whole runs: `mm-nh` with its defaults (the independent score) and with `--assignment-score joint` "
+    lines += ["Whole runs: `mm-nh` with `--assignment-score independent` and with its defaults (the joint score) "
               "(docs/association-front-end.md §4, \"Joint compatibility\"). MRCLAM: mean `da_accuracy_real` over "
               "robots 1-5 × label seeds 1-3; KITTI tracking: mean `da_accuracy_real` / mean "
               "`clutter_rejected_moving` over 0000-0010; Lost in the Woods: `da_accuracy_real` / ATE [m]; KITTI 00 "
@@ -64,7 +65,7 @@ def assignment_score_section(semslam, data, scratch, shown):
     lines += decisions_table(families, folders)
     lines += ["", "```sh",
               shown([semslam, "run", "--method", "mm-nh", "--in", "LOG", "--out", "DIR", "--no-covariances",
-                     "[--assignment-score joint]", "[--on-true-history]"]),
+                     "[--assignment-score independent]", "[--on-true-history]"]),
               "```",
               "LOG: as in the window sweep above.", ""]
     return lines

@@ -103,9 +103,10 @@ void addSemanticSlamOptions(CLI::App* command, SemanticSlamOptions& options) {
           [&options](const std::string& name) { options.assignmentScore = parseAssignmentScore(name); },
           "birth unassigned: how a step's joint assignment scores its detections' pairings: independent (each by "
           "its own likelihood, Hungarian) or joint (by the joint density of their innovations, which share the "
-          "pose's error: joint compatibility branch and bound; docs/association-front-end.md §4)")
+          "pose's error: joint compatibility branch and bound; docs/association-front-end.md §4; the default "
+          "wherever a method decides)")
       ->check(CLI::IsMember({"independent", "joint"}))
-      ->default_str("independent");
+      ->default_str("joint");
   command->add_option("--warm-start-posterior", options.warmStartMinimumPosterior,
                       "mm, mm-nh: warm-start a detection only on a candidate of at least this posterior "
                       "(0: every detection; docs/association-front-end.md)")

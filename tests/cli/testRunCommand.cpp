@@ -359,26 +359,30 @@ TEST(RunCommand, LoopClosureBranchesAreListedInBranchesCsv) {
   fs::remove_all(dir);
 }
 
-TEST(RunCommand, TheAssignmentScoreIsIndependentByDefaultAndJointOnRequest) {
+TEST(RunCommand, TheAssignmentScoreIsJointByDefaultAndIndependentOnRequest) {
   const fs::path dir = fs::temp_directory_path() / "semslam_cli_assignment_score";
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path log = dir / "log.jsonl";
-  ASSERT_EQ(runSemslam("simulate semantic --steps 60 --seed 14 --odom-noise-scale 3 --out \"" + log.string() + "\"")
+  ASSERT_EQ(runSemslam("simulate semantic --steps 80 --seed 6 --odom-noise-scale 10 --out \"" + log.string() + "\"")
                 .exitCode,
             0);
   const auto run = [&](const std::string& name, const std::string& flags) {
     const fs::path folder = dir / name;
-    const auto result = runSemslam("run --method mm-nh " + flags + " --in \"" + log.string() + "\" --out \"" +
-                                   folder.string() + "\"");
+    const auto result = runSemslam("run " + flags + " --in \"" + log.string() + "\" --out \"" + folder.string() + "\"");
     EXPECT_EQ(result.exitCode, 0) << result.output;
     return folder;
   };
-  const fs::path byDefault = run("default", ""), independent = run("independent", "--assignment-score independent");
-  const fs::path joint = run("joint", "--assignment-score joint");
-  EXPECT_EQ(fileText(byDefault / "associations.csv"), fileText(independent / "associations.csv"));
-  EXPECT_EQ(fileText(byDefault / "trajectory.tum"), fileText(independent / "trajectory.tum"));
-  EXPECT_TRUE(fs::exists(joint / "metrics.json"));
+  const fs::path byDefault = run("default", "--method mm-nh");
+  const fs::path joint = run("joint", "--method mm-nh --assignment-score joint");
+  const fs::path independent = run("independent", "--method mm-nh --assignment-score independent");
+  EXPECT_EQ(fileText(byDefault / "associations.csv"), fileText(joint / "associations.csv"));
+  EXPECT_EQ(fileText(byDefault / "trajectory.tum"), fileText(joint / "trajectory.tum"));
+  // This log is one where the two scores decide differently, so the equality above says which one is the default.
+  EXPECT_NE(fileText(independent / "associations.csv"), fileText(joint / "associations.csv"));
+  // Where no step assignment is scored, the default is no refusal: known and the threshold birth run as before.
+  EXPECT_TRUE(fs::exists(run("known", "--method known") / "metrics.json"));
+  EXPECT_TRUE(fs::exists(run("threshold", "--method mm-nh --birth threshold") / "metrics.json"));
   fs::remove_all(dir);
 }
 

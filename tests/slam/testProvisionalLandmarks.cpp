@@ -223,8 +223,9 @@ LogHeader labelledRelativePositionHeader(int classes, double misclassification) 
 /// Landmarks L at (4, 1) and K at (5, −1), 10 classes, a categorical classifier wrong 1 % of the time. Step 0 (pose
 /// known) sees both; four steps of exact but very uncertain odometry (σ 2.3 m declared) follow; step 5 sees K with
 /// its own label and L misclassified. Under the pose's uncertainty neither prediction beats the unassigned
-/// hypothesis on geometry alone; K's label carries it, L's wrong label does not, so L's detection starts a
-/// provisional landmark. K's detection then pins the pose, and the merge test (§5) finds the new landmark where L is.
+/// hypothesis on geometry alone; K's label carries it, L's wrong label does not, so under the independent score L's
+/// detection starts a provisional landmark. K's detection then pins the pose, and the merge test (§5) finds the new
+/// landmark where L is. The joint score (the default, §4) sees at once that K's pairing pins the pose for L's.
 struct LateMerge {
   LogHeader header = labelledRelativePositionHeader(10, 0.01);
   Point2 l{4.0, 1.0}, k{5.0, -1.0};
@@ -253,7 +254,9 @@ struct LateMerge {
 TEST(ProvisionalLandmarks, ALandmarkBornUnderUncertaintyMergesOnceThePoseIsPinned) {
   const LateMerge setup;
   for (AssociationStrategy strategy : {AssociationStrategy::MaximumLikelihood, AssociationStrategy::MaxMixtureNullHypothesis}) {
-    SemanticSlam slam(setup.header, unassignedOptions(strategy));
+    SemanticSlamOptions options = unassignedOptions(strategy);
+    options.assignmentScore = AssignmentScore::Independent;
+    SemanticSlam slam(setup.header, options);
     setup.run(slam);
     ASSERT_EQ(slam.landmarks(), 3) << strategyName(strategy);  // L, K, and the one L's second detection started
     EXPECT_EQ(slam.lifecycle().state(2), State::Merged) << strategyName(strategy);
@@ -264,6 +267,20 @@ TEST(ProvisionalLandmarks, ALandmarkBornUnderUncertaintyMergesOnceThePoseIsPinne
     EXPECT_LT(differenceFromBatch(slam), 1e-9) << strategyName(strategy);
     slam.finish();
     EXPECT_EQ(slam.result(false).landmarks.size(), 2u) << strategyName(strategy);
+  }
+}
+
+TEST(ProvisionalLandmarks, TheJointScorePairsWhatTheIndependentOneLeavesToTheMergeTest) {
+  const LateMerge setup;
+  for (AssociationStrategy strategy : {AssociationStrategy::MaximumLikelihood, AssociationStrategy::MaxMixtureNullHypothesis}) {
+    SemanticSlam slam(setup.header, unassignedOptions(strategy));  // the default: the joint score
+    setup.run(slam);
+    EXPECT_EQ(slam.landmarks(), 2) << strategyName(strategy);  // no provisional landmark
+    const DetectionRecord& second = slam.detections()[2];
+    ASSERT_EQ(second.step, 5);
+    EXPECT_EQ(second.assigned, std::optional<int>(0)) << strategyName(strategy);
+    EXPECT_EQ(slam.detections()[3].assigned, std::optional<int>(1)) << strategyName(strategy);
+    EXPECT_LT(differenceFromBatch(slam), 1e-9) << strategyName(strategy);
   }
 }
 

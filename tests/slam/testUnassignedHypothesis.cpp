@@ -205,5 +205,27 @@ TEST(UnassignedHypothesis, TheJointScoreNeedsAStrategyThatDecidesAndTheUnassigne
   EXPECT_THROW(parseAssignmentScore("hungarian"), std::invalid_argument);
 }
 
+TEST(UnassignedHypothesis, TheJointScoreIsTheDefaultWhereAStepAssignmentIsScored) {
+  SemanticSlamOptions options;
+  for (AssociationStrategy strategy : {AssociationStrategy::MaximumLikelihood, AssociationStrategy::MaxMixture,
+                                       AssociationStrategy::MaxMixtureNullHypothesis, AssociationStrategy::Gpda}) {
+    options.strategy = strategy;
+    EXPECT_EQ(resolvedAssignmentScore(options), AssignmentScore::Joint) << strategyName(strategy);
+  }
+  // Nothing to score: known assigns nothing, the threshold birth has no step assignment. The default is no refusal.
+  const TwoLandmarksUnderABroadPose setup;
+  options.strategy = AssociationStrategy::Known;
+  EXPECT_EQ(resolvedAssignmentScore(options), AssignmentScore::Independent);
+  EXPECT_NO_THROW(SemanticSlam(setup.log.header, options));
+  options.strategy = AssociationStrategy::MaxMixtureNullHypothesis;
+  options.birth = BirthRule::Threshold;
+  EXPECT_EQ(resolvedAssignmentScore(options), AssignmentScore::Independent);
+  EXPECT_NO_THROW(SemanticSlam(setup.log.header, options));
+  // Set, it is what it says.
+  options.birth = BirthRule::Unassigned;
+  options.assignmentScore = AssignmentScore::Independent;
+  EXPECT_EQ(resolvedAssignmentScore(options), AssignmentScore::Independent);
+}
+
 }  // namespace
 }  // namespace semslam

@@ -94,6 +94,7 @@ MethodRun runOnKnownTrajectory(const MeasurementLog& log, const MethodOptions& o
   known.slam.loopClosureBranchWindow.reset();
   known.slam.loopClosureNextBest.reset();
   known.slam.loopClosureOpenSplits.reset();
+  known.slam.assignmentScore.reset();
   const bool moved = poseErrorScale > 0.0;
   known.poseCovariances = moved && draw == PoseErrorDraw::Independent;
   known.keepFinalGraph = moved && draw == PoseErrorDraw::Joint;

@@ -77,6 +77,12 @@ std::string assignmentScoreName(AssignmentScore score) {
   return score == AssignmentScore::Independent ? "independent" : "joint";
 }
 
+AssignmentScore resolvedAssignmentScore(const SemanticSlamOptions& options) {
+  if (options.assignmentScore) return *options.assignmentScore;
+  const bool scored = options.birth == BirthRule::Unassigned && options.strategy != AssociationStrategy::Known;
+  return scored ? AssignmentScore::Joint : AssignmentScore::Independent;  // (§4, "The default")
+}
+
 int SemanticSlam::bestCandidate(const DetectionRecord& record) {
   if (record.assigned) {
     const auto found = std::find(record.candidates.begin(), record.candidates.end(), *record.assigned);
@@ -508,7 +514,7 @@ void SemanticSlam::findCandidatesWithUnassigned(const JointMarginal* marginal, c
 std::vector<int> SemanticSlam::jointAssignment(std::size_t first) const {
   const std::vector<int> independent = independentAssignment(first);
   // One detection's joint density is its own: the search would return the independent assignment.
-  if (options_.assignmentScore != AssignmentScore::Joint || !pending_ || !pending_->marginal ||
+  if (resolvedAssignmentScore(options_) != AssignmentScore::Joint || !pending_ || !pending_->marginal ||
       records_.size() - first < 2) {
     return independent;
   }

@@ -15,9 +15,9 @@
 //      normalised over the candidates. No candidate: z starts a new landmark at its back-projection from x̄_k;
 //      with BirthRule::Unassigned (docs/association-front-end.md) the gate is the joint geometric × semantic one,
 //      every detection also has the unassigned hypothesis (UnassignedHypothesis.h), and the step's detections are
-//      assigned jointly, at most one per landmark (Hungarian on each pairing's own likelihood; with
-//      AssignmentScore::Joint, the joint density of the step's pairings, JointCompatibility.h); an unassigned
-//      detection starts a new landmark
+//      assigned jointly, at most one per landmark, by the joint density of the step's pairings (the default,
+//      AssignmentScore::Joint, JointCompatibility.h; AssignmentScore::Independent: Hungarian on each pairing's own
+//      likelihood); an unassigned detection starts a new landmark
 //      (a posed landmark seen by a position-only sensor also gets a prior of σ = π on its orientation, which
 //      nothing else observes, and an uninformative one on its position, so the system stays positive definite);
 //   3. the strategy's factors (AssociationStrategy.h): mm builds a MaxMixtureFactor with components w_l; mm-nh adds
@@ -112,7 +112,8 @@ std::string birthRuleName(BirthRule rule);
 enum class AssignmentScore {
   Independent,  ///< each pairing by its own marginal density, the product maximised by the Hungarian algorithm
   Joint,        ///< the pairings by the joint density of their stacked innovations, which share the pose's error
-                ///< (association/JointCompatibility.h: joint compatibility branch and bound; opt-in)
+                ///< (association/JointCompatibility.h: joint compatibility branch and bound; the default since
+                ///< session 33, §4 "The default")
 };
 
 /// "independent" | "joint"; anything else throws std::invalid_argument.
@@ -145,9 +146,10 @@ struct SemanticSlamOptions {
   /// closure); 0: never, two or more on null as in §6b (docs/association-front-end.md §6c; opt-in)
   double nullEscapeWindow = 0.0;
   double anchoringInformation = 2.0;  ///< §10: a pairing anchors when ½ ln det(S R⁻¹) exceeds this (nats)
-  /// BirthRule::Unassigned: how the step's joint assignment scores an association (§4; AssignmentScore::Joint
-  /// needs a strategy that decides, not known)
-  AssignmentScore assignmentScore = AssignmentScore::Independent;
+  /// BirthRule::Unassigned: how the step's joint assignment scores an association (§4). Unset: Joint where a step
+  /// assignment is scored (BirthRule::Unassigned and a strategy that decides, not known), Independent elsewhere,
+  /// where nothing reads it (resolvedAssignmentScore). Set to Joint, it needs such options.
+  std::optional<AssignmentScore> assignmentScore;
   /// §10 (LoopClosureBranches.h): steps a second branch is kept open after an anchoring step before the better one
   /// is kept; 0: no branches. Unset: LoopClosureBranches::kDefaultWindow where branches apply (BirthRule::Unassigned
   /// with ml, mm or mm-nh), none elsewhere.
@@ -168,6 +170,10 @@ struct SemanticSlamOptions {
   /// strategy other than known; no branches, lifecycle or null escape (nothing the front end decides is applied).
   bool decideOnTrueHistory = false;
 };
+
+/// The assignment score a run with these options uses: SemanticSlamOptions::assignmentScore where set; unset, Joint
+/// where a step assignment is scored (BirthRule::Unassigned with a strategy that decides), Independent elsewhere.
+AssignmentScore resolvedAssignmentScore(const SemanticSlamOptions& options);
 
 /// What became of one detection.
 struct DetectionRecord {

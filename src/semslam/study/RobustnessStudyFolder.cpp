@@ -39,7 +39,7 @@ std::string robustnessStudyJson(const RobustnessStudy& study, const RobustnessSt
       {"smoother", labels.smoother},
       {"warm_start", options.slam.warmStart},
       {"label_split", options.slam.labelSplit},
-      {"assignment_score", assignmentScoreName(options.slam.assignmentScore)},
+      {"assignment_score", assignmentScoreName(resolvedAssignmentScore(options.slam))},
       {"model_misclassification_floor", options.modelMisclassificationFloor},
       {"stuck_ratio", options.stuckRatio},
       {"stuck_margin_m", options.stuckMargin},
