@@ -24,6 +24,7 @@ import results_backends
 import results_commands
 import results_association_defaults
 import results_hybrid_mrclam
+import results_held_out_trajectories
 import results_hybrid_scaling
 import results_kitti_tracking
 import results_loop_closure_branches
@@ -315,7 +316,7 @@ def bounded_memory_lines(semslam, data, scratch, litw):
 
 
 SECTIONS = ["pose-graphs", "evo", "datasets", "hybrid", "hybrid-mrclam", "hybrid-scaling", "max-mixtures",
-            "robustness", "association", "association-oracles", "association-ceiling", "association-defaults",
+            "robustness", "association", "held-out-trajectories", "association-oracles", "association-ceiling", "association-defaults",
             "loop-closure-branches",
             "loop-closure-next-best", "loop-closure-open-splits", "assignment-score", "kitti-tracking", "back-ends",
             "studies-mpi"]
@@ -357,6 +358,9 @@ def section_lines(name, semslam, data, scratch):
     elif name == "loop-closure-open-splits":
         body = results_loop_closure_open_splits.loop_closure_open_splits_section(semslam, data, scratch,
                                                                                  lambda command: shown(command, data))
+    elif name == "held-out-trajectories":
+        body = results_held_out_trajectories.held_out_trajectories_section(
+            semslam, data, os.path.join(scratch, "held-out-trajectories"), lambda command: shown(command, data))
     elif name == "assignment-score":
         body = results_assignment_score.assignment_score_section(semslam, data, scratch,
                                                                  lambda command: shown(command, data))

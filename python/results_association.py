@@ -114,33 +114,53 @@ def kitti_generalisation_section(semslam, data, scratch, shown):
              "the log of the max-mixtures section). `≤ 2 × known`, `≤ ml`: each bound; `target`: both. "
              "`mm-nh − ml` shows how far apart the two are where the second bound fails. Two ATEs within a "
              "micrometre count as equal: runs that end with the same associations differ only by round-off, "
-             "3e-11 to 2e-9 m.", "",
-             "| sequence | seed | known ATE [m] | ml ATE [m] | mm-nh ATE [m] | mm-nh − ml [m] | ml da_accuracy_real | "
-             "mm-nh da_accuracy_real | mm-nh time [s] | ≤ 2 × known | ≤ ml | target |",
+             "3e-11 to 2e-9 m.", ""]
+    logs = [(sequence, seed, os.path.join(data, "kitti-odometry-poses", f"{sequence}.txt"),
+             os.path.join(scratch, f"kitti{sequence}-seed{seed}")) for sequence, seed in KITTI_LOGS]
+    table = kitti_target_table(semslam, logs, "sequence")
+    if table is None:
+        return lines[:2] + ["KITTI odometry poses are absent: section skipped.", ""]
+    example = kitti_simulation(semslam, "../shared/data/kitti-odometry-poses/SEQ.txt", "kSEQ-S.jsonl", "S")
+    lines += table + ["", "```sh", shown([str(a) for a in example]),
+                      "for m in known ml mm-nh; do build/bin/semslam run --method $m --in kSEQ-S.jsonl --out "
+                      "kSEQ-S/$m --no-covariances; done", "```", ""]
+    return lines
+
+
+def kitti_target_table(semslam, logs, label_header):
+    """The issue's KITTI target on semantic simulations over KITTI trajectories, logs [(label, seed, trajectory
+    file, scratch stem)] (those whose trajectory is absent left out): each simulated (kitti_simulation), `known`,
+    `ml` and `mm-nh` run on it with their defaults, a row per log and a summary line. None when no trajectory is
+    present."""
+    lines = [f"| {label_header} | seed | known ATE [m] | ml ATE [m] | mm-nh ATE [m] | mm-nh − ml [m] | "
+             "ml da_accuracy_real | mm-nh da_accuracy_real | mm-nh time [s] | ≤ 2 × known | ≤ ml | target |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    present = [log for log in logs if os.path.exists(log[2])]
+    if not present:
+        return None
     jobs = []
-    for sequence, seed in KITTI_LOGS:
-        trajectory = os.path.join(data, "kitti-odometry-poses", f"{sequence}.txt")
-        if not os.path.exists(trajectory):
-            continue
-        log = os.path.join(scratch, f"kitti{sequence}-seed{seed}.jsonl")
+    for label, seed, trajectory, stem in present:
+        log = stem + ".jsonl"
         run_checked(kitti_simulation(semslam, trajectory, log, seed))
         for method in KITTI_METHODS:
-            out = os.path.join(scratch, f"kitti{sequence}-seed{seed}-{method}")
-            jobs.append((sequence, seed, method, out,
+            out = f"{stem}-{method}"
+            jobs.append(((label, seed, method), out,
                          [semslam, "run", "--overwrite", "--method", method, "--in", log, "--out", out,
                           "--no-covariances"]))
-    if not jobs:
-        return lines[:2] + ["KITTI odometry poses are absent: section skipped.", ""]
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, (os.cpu_count() or 2))) as pool:
-        list(pool.map(lambda job: run_checked(job[4]), jobs))
-    results = {(j[0], j[1], j[2]): read_metrics(j[3]) for j in jobs}
+        list(pool.map(lambda job: run_checked(job[2]), jobs))
+    results = {key: read_metrics(out) for key, out, _ in jobs}
+    rows = [(label, seed) + tuple(results[(label, seed, m)] for m in KITTI_METHODS) for label, seed, _, _ in present]
+    return lines + kitti_target_rows(rows, label_header)
+
+
+def kitti_target_rows(rows, label_header):
+    """The table rows and the summary line of kitti_target_table from rows [(label, seed, known metrics, ml
+    metrics, mm-nh metrics)]."""
+    lines = []
     met = {"known": 0, "ml": 0, "both": 0, "tied": 0}
     above_ml = []  # (mm-nh's ATE minus ml's, that over ml's) where mm-nh's is the higher
-    for sequence, seed in KITTI_LOGS:
-        if (sequence, seed, "known") not in results:
-            continue
-        known, ml, mm = (results[(sequence, seed, m)] for m in KITTI_METHODS)
+    for label, seed, known, ml, mm in rows:
         within_known = mm["ate_rmse"] <= 2.0 * known["ate_rmse"]
         within_ml = at_most(mm["ate_rmse"], ml["ate_rmse"])
         met["known"] += within_known
@@ -149,19 +169,15 @@ def kitti_generalisation_section(semslam, data, scratch, shown):
         if not within_ml:
             above_ml.append((mm["ate_rmse"] - ml["ate_rmse"], mm["ate_rmse"] / ml["ate_rmse"] - 1.0))
         met["both"] += within_known and within_ml
-        lines.append(f"| {sequence} | {seed} | {known['ate_rmse']:.3f} | {ml['ate_rmse']:.3f} | {mm['ate_rmse']:.3f} | "
+        lines.append(f"| {label} | {seed} | {known['ate_rmse']:.3f} | {ml['ate_rmse']:.3f} | {mm['ate_rmse']:.3f} | "
                      f"{mm['ate_rmse'] - ml['ate_rmse']:+.4f} | {ml['da_accuracy_real']:.3f} | "
                      f"{mm['da_accuracy_real']:.3f} | {mm['time_s']:.1f} | {'yes' if within_known else 'no'} | "
                      f"{'yes' if within_ml else 'no'} | {'yes' if within_known and within_ml else 'no'} |")
-    example = kitti_simulation(semslam, "../shared/data/kitti-odometry-poses/SEQ.txt", "kSEQ-S.jsonl", "S")
-    logs = len(results) // len(KITTI_METHODS)
-    lines += ["", f"mm-nh within 2 × known-DA's ATE on {met['known']} of {logs} logs, at most ml's on {met['ml']} "
-              f"({met['tied']} of them equal to it to a micrometre), both (the target) on {met['both']}."
+    ml_within_known = sum(ml["ate_rmse"] <= 2.0 * known["ate_rmse"] for _, _, known, ml, _ in rows)
+    lines += ["", f"mm-nh within 2 × known-DA's ATE on {met['known']} of {len(rows)} logs (ml on "
+              f"{ml_within_known}), at most ml's on {met['ml']} ({met['tied']} of them equal to it to a micrometre), "
+              f"both (the target) on {met['both']}."
               + (f" Where mm-nh's ATE is above ml's, it is so by {min(a for a, _ in above_ml):.4f} to "
                  f"{max(a for a, _ in above_ml):.4f} m (at most {max(r for _, r in above_ml):.1%} of ml's)."
-                 if above_ml else ""), "", "```sh",
-              shown([str(a) for a in example]),
-              "for m in known ml mm-nh; do build/bin/semslam run --method $m --in kSEQ-S.jsonl --out kSEQ-S/$m "
-              "--no-covariances; done", "```", ""]
+                 if above_ml else "")]
     return lines
-
