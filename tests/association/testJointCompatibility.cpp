@@ -60,6 +60,17 @@ struct PlanarProblem {
   JointDensity densityFunction() const {
     return [this](const std::vector<std::pair<std::size_t, int>>& pairings) { return density(pairings); };
   }
+
+  /// Each row's pairings alone, s_ij + ln N(ν_ij; 0, S_ij), as the front end weighs them.
+  void weighPairingsAlone() {
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      rows[i].pairingLogLikelihoods.clear();
+      for (std::size_t c = 0; c < rows[i].candidates.size(); ++c) {
+        rows[i].pairingLogLikelihoods.push_back(rows[i].labelLogLikelihoods[c] +
+                                                density({{i, rows[i].candidates[c]}}).logLikelihood);
+      }
+    }
+  }
 };
 
 /// Every exclusive assignment, each admissible only if every prefix of its pairings (in row order) passes the joint
@@ -152,6 +163,7 @@ PlanarProblem randomProblem(std::mt19937& rng, int landmarkCount, int rowCount) 
     row.logNormalizer = problem.logNormalizer(static_cast<std::size_t>(i));
     problem.rows.push_back(std::move(row));
   }
+  problem.weighPairingsAlone();
   return problem;
 }
 
@@ -184,8 +196,9 @@ TEST(JointCompatibility, TwoReSightingsUnderABroadPoseUncertaintyArePairedTogeth
   problem.noise = {0.01 * Matrix::Identity(2, 2), 0.01 * Matrix::Identity(2, 2)};
   const double unassigned = std::log(0.005);  // per m², e.g. a field of 200 m² holding one new object per step
   for (std::size_t i = 0; i < 2; ++i) {
-    problem.rows.push_back({{0, 1}, {0.0, 0.0}, unassigned, 0.0, problem.logNormalizer(i)});
+    problem.rows.push_back({{0, 1}, {0.0, 0.0}, {}, unassigned, 0.0, problem.logNormalizer(i)});
   }
+  problem.weighPairingsAlone();
   const AssociationGate gate;
   for (std::size_t i = 0; i < 2; ++i) {
     for (int j = 0; j < 2; ++j) {
@@ -208,8 +221,9 @@ TEST(JointCompatibility, TiesKeepTheIncumbentAndABudgetStopsTheSearch) {
   problem.measurements = {Vector2(0.0, 0.0), Vector2(0.0, 0.0)};
   problem.noise = {0.01 * Matrix::Identity(2, 2), 0.01 * Matrix::Identity(2, 2)};
   for (std::size_t i = 0; i < 2; ++i) {
-    problem.rows.push_back({{0}, {0.0}, std::log(1e-4), 0.0, problem.logNormalizer(i)});
+    problem.rows.push_back({{0}, {0.0}, {}, std::log(1e-4), 0.0, problem.logNormalizer(i)});
   }
+  problem.weighPairingsAlone();
   const AssociationGate gate;
   for (const std::vector<int>& incumbent : {std::vector<int>{0, -1}, std::vector<int>{-1, 0}}) {
     const JointAssignment found = jointlyCompatibleAssignment(problem.rows, problem.densityFunction(), gate, incumbent);
@@ -228,15 +242,39 @@ TEST(JointCompatibility, RefusesInconsistentProblems) {
   problem.landmarks = {Vector2(0.0, 0.0), Vector2(1.0, 0.0)};
   problem.measurements = {Vector2(0.0, 0.0), Vector2(1.0, 0.0)};
   problem.noise = {Matrix::Identity(2, 2), Matrix::Identity(2, 2)};
-  problem.rows = {{{0, 1}, {0.0, 0.0}, -5.0, 0.0, 1.0}, {{0, 1}, {0.0, 0.0}, -5.0, 0.0, 1.0}};
+  problem.rows = {{{0, 1}, {0.0, 0.0}, {-3.0, -4.0}, -5.0, 0.0, 1.0}, {{0, 1}, {0.0, 0.0}, {-3.0, -4.0}, -5.0, 0.0, 1.0}};
   const AssociationGate gate;
   const JointDensity density = problem.densityFunction();
   EXPECT_THROW(jointlyCompatibleAssignment(problem.rows, density, gate, {-1}), std::invalid_argument);  // size
   EXPECT_THROW(jointlyCompatibleAssignment(problem.rows, density, gate, {0, 0}), std::invalid_argument);  // twice
   EXPECT_THROW(jointlyCompatibleAssignment(problem.rows, density, gate, {2, -1}), std::invalid_argument);  // not one
   EXPECT_THROW(jointlyCompatibleAssignment(problem.rows, density, gate, {-1, -1}, 0), std::invalid_argument);  // budget
+  problem.rows[1].pairingLogLikelihoods.pop_back();
+  EXPECT_THROW(jointlyCompatibleAssignment(problem.rows, density, gate, {-1, -1}), std::invalid_argument);
+  problem.rows[1].pairingLogLikelihoods.push_back(-4.0);
   problem.rows[1].labelLogLikelihoods.pop_back();
   EXPECT_THROW(jointlyCompatibleAssignment(problem.rows, density, gate, {-1, -1}), std::invalid_argument);
+}
+
+TEST(JointCompatibility, ThePairingsAloneOnlyOrderTheSearch) {
+  // The pairings' own likelihoods only say which option is tried first: with other values (reversed and scrambled,
+  // some above the unassigned hypothesis where they were below) the search finds the same maximum (the random
+  // problems have no ties).
+  std::mt19937 rng(20261207);
+  const AssociationGate gate(0.99);
+  for (int trial = 0; trial < 200; ++trial) {
+    PlanarProblem problem = randomProblem(rng, 2 + trial % 5, 1 + trial % 5);
+    const std::vector<int> incumbent(problem.rows.size(), -1);
+    const JointAssignment ordered = jointlyCompatibleAssignment(problem.rows, problem.densityFunction(), gate, incumbent);
+    for (JointAssignmentRow& row : problem.rows) {
+      for (double& value : row.pairingLogLikelihoods) value = -value + std::uniform_real_distribution<double>(-9, 9)(rng);
+    }
+    const JointAssignment found = jointlyCompatibleAssignment(problem.rows, problem.densityFunction(), gate, incumbent);
+    ASSERT_TRUE(found.exhaustive);
+    EXPECT_EQ(found.landmarkOfRow, ordered.landmarkOfRow) << "trial " << trial;
+    EXPECT_NEAR(found.logLikelihood, ordered.logLikelihood, 1e-9 * (1.0 + std::abs(ordered.logLikelihood)))
+        << "trial " << trial;
+  }
 }
 
 }  // namespace

@@ -28,9 +28,7 @@ class Search {
     for (std::size_t i = 0; i < rows.size(); ++i) {
       std::vector<std::pair<double, int>> alone = {{rows[i].unassignedLogLikelihood, -1}};
       for (std::size_t c = 0; c < rows[i].candidates.size(); ++c) {
-        ++evaluations_;
-        const double single = density_({{i, rows[i].candidates[c]}}).logLikelihood;
-        alone.emplace_back(rows[i].labelLogLikelihoods[c] + single, static_cast<int>(c));
+        alone.emplace_back(rows[i].pairingLogLikelihoods[c], static_cast<int>(c));
       }
       std::stable_sort(alone.begin(), alone.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
       for (const auto& [value, option] : alone) options_[i].push_back(option);
@@ -146,10 +144,12 @@ void checkProblem(const std::vector<JointAssignmentRow>& rows, const std::vector
   }
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const JointAssignmentRow& row = rows[i];
-    if (row.labelLogLikelihoods.size() != row.candidates.size()) {
+    if (row.labelLogLikelihoods.size() != row.candidates.size() ||
+        row.pairingLogLikelihoods.size() != row.candidates.size()) {
       throw std::invalid_argument("joint compatibility: row " + std::to_string(i) + " has " +
-                                  std::to_string(row.candidates.size()) + " candidates and " +
-                                  std::to_string(row.labelLogLikelihoods.size()) + " label log-likelihoods");
+                                  std::to_string(row.candidates.size()) + " candidates, " +
+                                  std::to_string(row.labelLogLikelihoods.size()) + " label log-likelihoods and " +
+                                  std::to_string(row.pairingLogLikelihoods.size()) + " pairing log-likelihoods");
     }
     const int given = incumbent[i];
     if (given < 0) continue;

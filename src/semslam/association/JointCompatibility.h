@@ -21,7 +21,9 @@
 // of the independent score.
 //
 // Search: depth first over the rows in order, each row's options (unassigned, or a candidate) in the order of their
-// likelihood alone (u_i, or s_ij plus the pairing's own density), so that good assignments are found early; a
+// likelihood alone (u_i, or s_ij plus the pairing's own density, as the front end weighed it: the row's
+// pairingLogLikelihoods; the order decides which of equal scores is found first and how soon the bound cuts, never
+// the maximum), so that good assignments are found early; a
 // branch is cut when its pairings fail the joint gate, or when its score plus an upper bound on the rows left cannot
 // beat the best assignment found so far (the incumbent: the given assignment, where admissible). The bound of row i is
 // max(u_i, max_j s_ij − n_i), n_i = ½ m ln 2π + ½ ln det R_i its detection's log-normaliser: each pairing multiplies
@@ -44,6 +46,7 @@ namespace semslam {
 struct JointAssignmentRow {
   std::vector<int> candidates;                ///< the landmarks (columns) it may take
   std::vector<double> labelLogLikelihoods;    ///< s_ij, one per candidate
+  std::vector<double> pairingLogLikelihoods;  ///< s_ij + ln N(ν_ij; 0, S_ij), each pairing alone: the order tried
   double unassignedLogLikelihood = 0.0;       ///< u_i
   double labelPriorLogLikelihood = 0.0;       ///< ln P₀(s_i), the label under the uniform class prior (the gate's)
   double logNormalizer = 0.0;                 ///< n_i

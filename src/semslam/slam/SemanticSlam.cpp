@@ -519,26 +519,33 @@ std::vector<int> SemanticSlam::jointAssignment(std::size_t first) const {
     return independent;
   }
   // (§4, "Joint compatibility") The same hypotheses scored by the joint density of the pairings' innovations.
+  const Key pose = poseKeys_.back();
   std::vector<JointAssignmentRow> rows;
+  std::vector<std::vector<FactorPtr>> factorOf;  // per row and candidate: the pairing's factor, built once
   for (std::size_t r = first; r < records_.size(); ++r) {
     const DetectionRecord& record = records_[r];
     JointAssignmentRow& row = rows.emplace_back();
     row.candidates = record.candidates;
+    row.pairingLogLikelihoods = record.logLikelihoods;  // (the geometric and label terms of findCandidates)
     for (int j : record.candidates) {
       row.labelLogLikelihoods.push_back(std::log(landmarks_[j].classBelief.predictive(record.semanticLikelihoods)));
     }
     row.unassignedLogLikelihood = record.unassignedLogLikelihood;
     row.labelPriorLogLikelihood = std::log(labelPrior(record));
-    row.logNormalizer = factory_.detectionNoise(record.measurement)->logNormalizer();
+    const SharedNoiseModel noise = factory_.detectionNoise(record.measurement);
+    row.logNormalizer = noise->logNormalizer();
+    std::vector<FactorPtr>& factors = factorOf.emplace_back();
+    for (int j : record.candidates) {
+      factors.push_back(factory_.detectionFactor(pose, landmarks_[j].key, record.measurement, noise));
+    }
   }
-  const Key pose = poseKeys_.back();
   const JointDensity density = [&](const std::vector<std::pair<std::size_t, int>>& pairings) {
     std::vector<FactorPtr> factors;
     std::vector<Key> keys = {pose};
     for (const auto& [row, landmark] : pairings) {
-      const Detection& detection = records_[first + row].measurement;
-      factors.push_back(factory_.detectionFactor(pose, landmarks_[landmark].key, detection,
-                                                 factory_.detectionNoise(detection)));
+      const std::vector<int>& candidates = rows[row].candidates;
+      const auto c = std::find(candidates.begin(), candidates.end(), landmark) - candidates.begin();
+      factors.push_back(factorOf[row][static_cast<std::size_t>(c)]);
       keys.push_back(landmarks_[landmark].key);
     }
     return linearizedLikelihood(factors, smoother_->estimate(), pending_->marginal->restrictedTo(keys));
