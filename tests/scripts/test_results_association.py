@@ -40,7 +40,8 @@ class KittiTargetRows(unittest.TestCase):
         self.assertTrue(lines[3].endswith("| yes | no | no |"))
         self.assertEqual(lines[5], "mm-nh within 2 × known-DA's ATE on 3 of 4 logs (ml on 3), at most ml's on 2 (1 of "
                                    "them equal to it to a micrometre), both (the target) on 2. Where mm-nh's ATE is "
-                                   "above ml's, it is so by 1.0000 to 2.0000 m (at most 200.0% of ml's).")
+                                   "above ml's, it is so by 1.0000 to 2.0000 m (at most 200.0% of ml's); on 1 of "
+                                   "those 2 ml's ATE is below known association's own.")
 
 
 if __name__ == "__main__":
