@@ -14,7 +14,7 @@ The output's times start at 0 (the first frame kept) and rise strictly; the pose
 input (a line without 13 numbers, a number that is not finite, a time that does not rise, an empty selection) is
 refused with the file, the line and the problem, exit status 2; the output is written completely or not at all.
 
-Usage: edit_trajectory.py IN OUT [--frames FIRST:END] [--reverse]
+Usage: edit_trajectory.py IN --out OUT [--frames FIRST:END] [--reverse]
 """
 import argparse
 import math
@@ -94,13 +94,13 @@ def write_frames(path, frames):
 def main(arguments):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("input")
-    parser.add_argument("output")
+    parser.add_argument("--out", required=True, help="the edited pose file")
     parser.add_argument("--frames", default=":", help="FIRST:END, the frames kept (0-based, END excluded)")
     parser.add_argument("--reverse", action="store_true", help="drive the trajectory backwards")
     options = parser.parse_args(arguments)
     try:
         frames = edit(read_frames(options.input), parse_frames(options.frames), options.reverse)
-        write_frames(options.output, frames)
+        write_frames(options.out, frames)
     except (TrajectoryError, OSError) as error:
         print(f"edit_trajectory.py: {error}", file=sys.stderr)
         return 2

@@ -53,7 +53,7 @@ def held_out_trajectories_section(semslam, data, scratch, shown):
               "simulated with the association section's KITTI command. Columns as there.", ""]
     lines += table
     example_edit = ["/usr/bin/python3", "python/edit_trajectory.py", "../shared/data/kitti-odometry-poses/00.txt",
-                    "00-part.txt"] + edit_arguments(slice(2270, None), True)
+                    "--out", "00-part.txt"] + edit_arguments(slice(2270, None), True)
     lines += ["", "```sh", " ".join(example_edit),
               shown([str(a) for a in kitti_simulation(semslam, "00-part.txt", "k.jsonl", "S")]),
               "for m in known ml mm-nh; do build/bin/semslam run --method $m --in k.jsonl --out k/$m "

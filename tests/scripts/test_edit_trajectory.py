@@ -34,7 +34,7 @@ class EditTrajectory(unittest.TestCase):
             f.write("\n".join(lines) + "\n")
 
     def edited(self, *options):
-        self.assertEqual(edit_trajectory.main([self.input, self.output] + list(options)), 0)
+        self.assertEqual(edit_trajectory.main([self.input, "--out", self.output] + list(options)), 0)
         with open(self.output) as f:
             return [line.split(" ", 1) for line in f.read().splitlines()]
 
@@ -72,7 +72,7 @@ class EditTrajectory(unittest.TestCase):
             edit_trajectory.edit(edit_trajectory.read_frames(self.input),
                                  edit_trajectory.parse_frames(options[0] if options else ":"))
         self.assertIn(message, str(raised.exception))
-        self.assertEqual(edit_trajectory.main([self.input, self.output] + list(("--frames",) + options
+        self.assertEqual(edit_trajectory.main([self.input, "--out", self.output] + list(("--frames",) + options
                                                                                  if options else ())), 2)
         self.assertFalse(os.path.exists(self.output))
         self.assertFalse(os.path.exists(self.output + ".tmp"))
