@@ -63,12 +63,17 @@ def parse_frames(text):
         raise TrajectoryError(f"--frames {text}: FIRST and END must be whole numbers") from None
 
 
+def frames_text(selection):
+    """The FIRST:END of --frames that `selection` is (the inverse of parse_frames)."""
+    return ":".join("" if end is None else str(end) for end in (selection.start, selection.stop))
+
+
 def edit(frames, selection=slice(None), reverse=False):
     """The frames kept by `selection`, reversed in order and in time when `reverse`, re-timed to start at 0."""
     kept = frames[selection]
     if not kept:
-        bounds = ":".join("" if end is None else str(end) for end in (selection.start, selection.stop))
-        raise TrajectoryError(f"--frames {bounds} selects none of the trajectory's {len(frames)} frames")
+        raise TrajectoryError(f"--frames {frames_text(selection)} selects none of the trajectory's {len(frames)} "
+                              "frames")
     if reverse:
         last = kept[-1][0]
         return [(last - time, pose) for time, pose in reversed(kept)]

@@ -26,8 +26,7 @@ def edit_arguments(selection, reverse):
     """The options of python/edit_trajectory.py that make an edit."""
     arguments = []
     if selection != slice(None):
-        arguments += ["--frames", ("" if selection.start is None else str(selection.start)) + ":" +
-                      ("" if selection.stop is None else str(selection.stop))]
+        arguments += ["--frames", edit_trajectory.frames_text(selection)]
     return arguments + (["--reverse"] if reverse else [])
 
 
