@@ -9,7 +9,7 @@ import concurrent.futures
 import os
 
 from results_commands import read_metrics, run_checked
-from results_max_mixtures import kitti_simulation
+from results_max_mixtures import KITTI_STRIDE, kitti_simulation
 
 ROBOTS = [1, 2, 3, 4, 5]
 COLUMNS = ["ate_rmse", "da_accuracy_real", "pairwise_precision", "pairwise_recall", "clutter_rejected",
@@ -116,7 +116,7 @@ def kitti_generalisation_section(semslam, data, scratch, shown):
              "micrometre count as equal: runs that end with the same associations differ only by round-off, "
              "3e-11 to 2e-9 m.", ""]
     logs = [(sequence, seed, os.path.join(data, "kitti-odometry-poses", f"{sequence}.txt"),
-             os.path.join(scratch, f"kitti{sequence}-seed{seed}")) for sequence, seed in KITTI_LOGS]
+             os.path.join(scratch, f"kitti{sequence}-seed{seed}"), KITTI_STRIDE) for sequence, seed in KITTI_LOGS]
     table = kitti_target_table(semslam, logs, "sequence")
     if table is None:
         return lines[:2] + ["KITTI odometry poses are absent: section skipped.", ""]
@@ -129,9 +129,9 @@ def kitti_generalisation_section(semslam, data, scratch, shown):
 
 def kitti_target_table(semslam, logs, label_header):
     """The issue's KITTI target on semantic simulations over KITTI trajectories, logs [(label, seed, trajectory
-    file, scratch stem)] (those whose trajectory is absent left out): each simulated (kitti_simulation), `known`,
-    `ml` and `mm-nh` run on it with their defaults, a row per log and a summary line. None when no trajectory is
-    present."""
+    file, scratch stem, stride)] (those whose trajectory is absent left out): each simulated (kitti_simulation, a
+    step every `stride` camera frames), `known`, `ml` and `mm-nh` run on it with their defaults, a row per log and a
+    summary line. None when no trajectory is present."""
     lines = [f"| {label_header} | seed | known ATE [m] | ml ATE [m] | mm-nh ATE [m] | mm-nh − ml [m] | "
              "ml da_accuracy_real | mm-nh da_accuracy_real | mm-nh time [s] | ≤ 2 × known | ≤ ml | target |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|"]
@@ -139,9 +139,9 @@ def kitti_target_table(semslam, logs, label_header):
     if not present:
         return None
     jobs = []
-    for label, seed, trajectory, stem in present:
+    for label, seed, trajectory, stem, stride in present:
         log = stem + ".jsonl"
-        run_checked(kitti_simulation(semslam, trajectory, log, seed))
+        run_checked(kitti_simulation(semslam, trajectory, log, seed, stride))
         for method in KITTI_METHODS:
             out = f"{stem}-{method}"
             jobs.append(((label, seed, method), out,
@@ -150,7 +150,7 @@ def kitti_target_table(semslam, logs, label_header):
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, (os.cpu_count() or 2))) as pool:
         list(pool.map(lambda job: run_checked(job[2]), jobs))
     results = {key: read_metrics(out) for key, out, _ in jobs}
-    rows = [(label, seed) + tuple(results[(label, seed, m)] for m in KITTI_METHODS) for label, seed, _, _ in present]
+    rows = [(label, seed) + tuple(results[(label, seed, m)] for m in KITTI_METHODS) for label, seed, *_ in present]
     return lines + kitti_target_rows(rows, label_header)
 
 
