@@ -44,9 +44,11 @@ def held_out_trajectories_section(semslam, data, scratch, shown):
         source = os.path.join(data, "kitti-odometry-poses", f"{sequence}.txt")
         if not os.path.exists(source):
             continue
-        trajectory = os.path.join(scratch, f"edit{index}.txt")
-        edit_trajectory.write_frames(trajectory,
-                                     edit_trajectory.edit(edit_trajectory.read_frames(source), selection, reverse))
+        trajectory = source  # the strides simulate the sequence as it is: nothing to edit
+        if selection != slice(None) or reverse:
+            trajectory = os.path.join(scratch, f"edit{index}.txt")
+            edit_trajectory.write_frames(trajectory, edit_trajectory.edit(edit_trajectory.read_frames(source),
+                                                                          selection, reverse))
         logs += [(label, seed, trajectory, os.path.join(scratch, f"edit{index}-seed{seed}"), stride)
                  for seed in seeds]
     table = kitti_target_table(semslam, logs, "trajectory") if logs else None
