@@ -85,6 +85,10 @@ void addSemanticSlamOptions(CLI::App* command, SemanticSlamOptions& options) {
       [&options](std::int64_t count) { options.loopClosureNextBest = count > 0; },
       "with --loop-closure-branches: a third branch in which the closing detections take their next-best landmarks "
       "(docs/association-front-end.md §10; default: on for mm-nh, off for ml and mm)");
+  command->add_flag(
+      "--loop-closure-apart-keeps-merges,!--no-loop-closure-apart-keeps-merges", options.loopClosureApartKeepsMerges,
+      "with --loop-closure-branches: the branch without the closure refuses the step's loop-closing merges of "
+      "provisional landmarks too (docs/association-front-end.md §10; default: on)");
   command
       ->add_option_function<int>(
           "--loop-closure-open-splits", [&options](int splits) { options.loopClosureOpenSplits = splits; },

@@ -328,6 +328,11 @@ TEST(RunCommand, LoopClosureBranchesAreListedInBranchesCsv) {
   // split opened at step 26), which one split at a time does not do; every row keeps its lowest either way.
   EXPECT_EQ(fileText(runNoisy("two-open", "--loop-closure-open-splits 2") / "branches.csv"),
             fileText(nextBest / "branches.csv"));
+  // Branch B refuses the step's loop-closing merges too by default (--loop-closure-apart-keeps-merges); the
+  // negation, the rule before session 35, runs (SemanticSlamOptions::loopClosureApartKeepsMerges).
+  EXPECT_EQ(fileText(runNoisy("apart-keeps-merges", "--loop-closure-apart-keeps-merges") / "associations.csv"),
+            fileText(nextBest / "associations.csv"));
+  runNoisy("apart-merges", "--no-loop-closure-apart-keeps-merges");
   const fs::path oneOpen = runNoisy("one-open", "--loop-closure-open-splits 1");
   EXPECT_NE(fileText(oneOpen / "branches.csv"), fileText(nextBest / "branches.csv"));
   for (const BranchRow& split : branchRows(oneOpen)) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <random>
 #include <set>
@@ -239,15 +240,17 @@ struct LateMerge {
     return d;
   }
 
+  TimeStep step(int step) const {
+    if (step == 0) return TimeStep{0.0, std::nullopt, {detectionOf(l, SE2(), 0, 0), detectionOf(k, SE2(), 1, 1)}, SE2()};
+    const SE2 pose(0.1 * step, 0.0, 0.0);
+    TimeStep s{double(step), Odometry{SE2(0.1, 0.0, 0.0), Vector3(5.3, 5.3, 1e-6).asDiagonal().toDenseMatrix()},
+               {}, pose};
+    if (step == 5) s.detections = {detectionOf(l, pose, 7, 0), detectionOf(k, pose, 1, 1)};
+    return s;
+  }
+
   void run(SemanticSlam& slam) const {
-    slam.addStep(TimeStep{0.0, std::nullopt, {detectionOf(l, SE2(), 0, 0), detectionOf(k, SE2(), 1, 1)}, SE2()});
-    for (int step = 1; step <= 5; ++step) {
-      const SE2 pose(0.1 * step, 0.0, 0.0);
-      TimeStep s{double(step), Odometry{SE2(0.1, 0.0, 0.0), Vector3(5.3, 5.3, 1e-6).asDiagonal().toDenseMatrix()},
-                 {}, pose};
-      if (step == 5) s.detections = {detectionOf(l, pose, 7, 0), detectionOf(k, pose, 1, 1)};
-      slam.addStep(s);
-    }
+    for (int k = 0; k <= 5; ++k) slam.addStep(step(k));
   }
 };
 
@@ -267,6 +270,45 @@ TEST(ProvisionalLandmarks, ALandmarkBornUnderUncertaintyMergesOnceThePoseIsPinne
     EXPECT_LT(differenceFromBatch(slam), 1e-9) << strategyName(strategy);
     slam.finish();
     EXPECT_EQ(slam.result(false).landmarks.size(), 2u) << strategyName(strategy);
+  }
+}
+
+TEST(ProvisionalLandmarks, KeepMergesApartRefusesAnAnchoringMergeAndKeepsTheLandmarkApart) {
+  // (§10, branch B of a split: SemanticSlam::keepMergesApart) The merge of LateMerge's step 5 puts the provisional
+  // landmark P into L, a landmark mapped at step 0. Its merge information I = ½ ln det(Σ_d (2 R_w)⁻¹) is small,
+  // between 0.5 and 0.7 nats (bracketed with this test's τ): P is known through the pose that K's detection pins (σ
+  // about 0.1 m, as the detections'), L from the exactly known first pose, so Σ_d is about 2 R_w plus the pose's
+  // share. With τ = 0.3 below it, a fork of the begun step told to keep merges apart refuses the merge and keeps P
+  // apart from every landmark mapped before the step, while the run itself merges; at the default τ = 2 nats the
+  // merge does not anchor, and the fork merges too.
+  const LateMerge setup;
+  for (const double tau : {0.3, 2.0}) {
+    SemanticSlamOptions options = unassignedOptions(AssociationStrategy::MaximumLikelihood);
+    options.assignmentScore = AssignmentScore::Independent;
+    options.anchoringInformation = tau;
+    SemanticSlam slam(setup.header, options);
+    for (int k = 0; k <= 4; ++k) slam.addStep(setup.step(k));
+    slam.beginStep(setup.step(5));
+    const std::unique_ptr<SemanticSlam> apart = slam.fork();
+    apart->keepMergesApart();
+    apart->completeStep();
+    slam.completeStep();
+    ASSERT_EQ(slam.landmarks(), 3) << tau;
+    EXPECT_EQ(slam.lifecycle().state(2), State::Merged) << tau;  // the run merges either way
+    ASSERT_EQ(apart->landmarks(), 3) << tau;
+    const DetectionRecord& second = apart->detections()[2];  // L's detection of step 5, which started P
+    if (tau < 1.0) {
+      EXPECT_EQ(second.createdLandmark, 2) << tau;
+      EXPECT_EQ(apart->lifecycle().state(2), State::Provisional) << tau;
+      EXPECT_EQ(apart->chosenAssociation(second).first, 2) << tau;
+      // Kept apart for good: the next step sees L where P and L both are, and P still does not merge into L.
+      apart->addStep(setup.step(5));
+      EXPECT_NE(apart->lifecycle().state(2), State::Merged) << tau;
+    } else {
+      EXPECT_EQ(apart->lifecycle().state(2), State::Merged) << tau;
+      EXPECT_EQ(apart->lifecycle().mergedInto(2), 0) << tau;
+    }
+    EXPECT_LT(differenceFromBatch(*apart), 1e-9) << tau;
   }
 }
 

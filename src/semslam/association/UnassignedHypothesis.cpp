@@ -95,17 +95,19 @@ bool UnassignedHypothesis::inField(const Vector& position) const {
 }
 
 double UnassignedHypothesis::logDensity(const Detection& detection) const {
+  return logLandmarkDensity() + logBackProjectionJacobian(detection);
+}
+
+double UnassignedHypothesis::logBackProjectionJacobian(const Detection& detection) const {
   const Polar p = polarOf(detection);
-  double logJacobian = 0.0;
   switch (kind_) {
-    case SensorKind::RangeBearing: logJacobian = std::log(p.range); break;
+    case SensorKind::RangeBearing: return std::log(p.range);
     case SensorKind::RangeBearingElevation:
-      logJacobian = 2.0 * std::log(p.range) + std::log(std::max(std::cos(p.elevation), 1e-12));
-      break;
-    case SensorKind::RelativePosition: break;
-    case SensorKind::RelativePose: break;  // a pose measures the landmark's variable itself: J = 1
+      return 2.0 * std::log(p.range) + std::log(std::max(std::cos(p.elevation), 1e-12));
+    case SensorKind::RelativePosition: return 0.0;
+    case SensorKind::RelativePose: return 0.0;  // a pose measures the landmark's variable itself: J = 1
   }
-  return logLandmarkDensity() + logJacobian;
+  return 0.0;
 }
 
 double UnassignedHypothesis::logLandmarkDensity() const {

@@ -37,8 +37,12 @@ class UnassignedHypothesis {
   /// Widens the data-defined extents (range, bearing, elevation) by one detection's geometry.
   void observe(const Detection& detection);
 
-  /// ln λ(z_g) of a detection's geometry (not its label).
+  /// ln λ(z_g) of a detection's geometry (not its label): logLandmarkDensity() + logBackProjectionJacobian.
   double logDensity(const Detection& detection) const;
+  /// ln J of a detection's geometry: the Jacobian determinant of the back-projection of its position part to the
+  /// world (r, r² cos φ, or 1 for relative positions and poses), so that a position covariance R in the sensor's
+  /// coordinates is J R Jᵀ in the world with ½ ln det(J R Jᵀ) = ½ ln det R + ln J.
+  double logBackProjectionJacobian(const Detection& detection) const;
   /// ln ρ = ln(μ / V): the density of unassigned landmarks per m² (2D) or m³ (3D) of the world, the prior of a
   /// provisional landmark's merge test (docs/association-front-end.md §5).
   double logCartesianDensity() const;

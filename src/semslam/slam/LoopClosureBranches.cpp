@@ -61,7 +61,10 @@ int LoopClosureBranches::maximumOpenSplits(const SemanticSlamOptions& options) {
 }
 
 LoopClosureBranches::LoopClosureBranches(const LogHeader& header, SemanticSlamOptions options)
-    : window_(window(options)), nextBestBranch_(nextBest(options)), maximumOpenSplits_(maximumOpenSplits(options)) {
+    : window_(window(options)),
+      nextBestBranch_(nextBest(options)),
+      apartKeepsMerges_(options.loopClosureApartKeepsMerges),
+      maximumOpenSplits_(maximumOpenSplits(options)) {
   leaves_.push_back({std::make_unique<SemanticSlam>(header, std::move(options)), {}});
 }
 
@@ -83,6 +86,7 @@ std::size_t LoopClosureBranches::advance(std::size_t leaf, const TimeStep& step)
       Leaf apart{run.fork(), lineage};
       apart.lineage.emplace_back(id, Branch::Apart);
       apart.run->keepApart(anchoring);
+      if (apartKeepsMerges_) apart.run->keepMergesApart();
       apart.run->completeStep();
       branches.push_back(std::move(apart));
       if (nextBestBranch_) {

@@ -9,7 +9,9 @@
 //   branch A  the step as the front end decided it;
 //   branch B  a fork of the run taken between the halves of step k (SemanticSlam::beginStep / completeStep), in
 //             which the anchoring detections start provisional landmarks, never merged with the landmarks they
-//             were paired with (SemanticSlam::keepApart).
+//             were paired with (SemanticSlam::keepApart), and no provisional landmark closes the loop by a merge at
+//             step k either (SemanticSlam::keepMergesApart; SemanticSlamOptions::loopClosureApartKeepsMerges): the
+//             step without any loop closure.
 //   branch C  (SemanticSlamOptions::loopClosureNextBest; on by default for mm-nh, nextBest()) a fork in which the
 //             anchoring detections may not take the landmarks they were paired with, so they take their next-best
 //             ones (SemanticSlam::pairElsewhere): the other look-alike; opened only where some detection then has
@@ -133,6 +135,7 @@ class LoopClosureBranches {
 
   int window_;
   bool nextBestBranch_;
+  bool apartKeepsMerges_;  // SemanticSlamOptions::loopClosureApartKeepsMerges
   int maximumOpenSplits_;
   int nextSplitId_ = 0;
   std::vector<Leaf> leaves_;

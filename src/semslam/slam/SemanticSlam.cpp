@@ -344,14 +344,7 @@ void SemanticSlam::completeStep() {
     factorsOfRecord.push_back(associations.size() - factorsBefore);
   }
   warmStarted.resize(records_.size() - first, false);
-  for (std::size_t r : pending.keptApart) {  // (§10) an object not mapped before: never merged with one that was
-    const int born = records_[r].createdLandmark.value();
-    for (int j = 0; j < landmarksBeforeStep; ++j) {
-      if (!lifecycle_.active(j)) continue;
-      landmarks_[static_cast<std::size_t>(born)].distinctFrom.push_back(j);
-      landmarks_[static_cast<std::size_t>(j)].distinctFrom.push_back(born);
-    }
-  }
+  for (std::size_t r : pending.keptApart) keepApartFromMapped(records_[r].createdLandmark.value(), landmarksBeforeStep);
   for (const FactorPtr& prior : weakPriors) associations.add(prior);
   for (const FactorPtr& prior : orientationPriors) associations.add(prior);
 
@@ -376,7 +369,7 @@ void SemanticSlam::completeStep() {
     expectationMaximization(firstRecordOfStep_[firstStep], options_.emIterations);
   }
   if (jointly) {
-    updateLifecycle(k, landmarksBeforeStep);
+    updateLifecycle(k, landmarksBeforeStep, pending.mergesKeptApart);
     while (repairExclusion(first, records_.size())) {
     }
     if (options_.strategy == AssociationStrategy::MaxMixtureNullHypothesis && options_.nullEscape) {
@@ -621,6 +614,35 @@ void SemanticSlam::keepApart(const std::vector<std::size_t>& records) {
     pending_->keptApart.push_back(r);
     landmark = -1;
   }
+}
+
+void SemanticSlam::keepMergesApart() {
+  if (!pending_) throw std::logic_error("keepMergesApart: no step begun");
+  pending_->mergesKeptApart = true;
+}
+
+void SemanticSlam::keepApartFromMapped(int landmark, int landmarksBeforeStep) {
+  for (int j = 0; j < landmarksBeforeStep; ++j) {
+    if (j == landmark || !lifecycle_.active(j)) continue;
+    landmarks_[static_cast<std::size_t>(landmark)].distinctFrom.push_back(j);
+    landmarks_[static_cast<std::size_t>(j)].distinctFrom.push_back(landmark);
+  }
+}
+
+double SemanticSlam::mergeInformation(int p, double halfLogDetDifference) const {
+  std::optional<std::size_t> last;  // p's last detection: the one that started it, or the last assigned to it
+  for (std::size_t r : landmarks_[static_cast<std::size_t>(p)].records) {
+    if (records_[r].createdLandmark == p || records_[r].assigned == p) last = r;
+  }
+  if (!last) throw std::logic_error("mergeInformation: landmark " + std::to_string(p) + " holds no detection");
+  const Detection& detection = records_[*last].measurement;
+  const int d = factory_.dimension();
+  const Eigen::LLT<Matrix> cholesky(detection.covariance.topLeftCorner(d, d));
+  const double halfLogDetSensor = cholesky.matrixLLT().diagonal().array().log().sum();
+  // ½ ln det(2 J R Jᵀ) = (d/2) ln 2 + ½ ln det R + ln J
+  const double halfLogDetTwoWorld =
+      0.5 * d * std::log(2.0) + halfLogDetSensor + unassigned_.logBackProjectionJacobian(detection);
+  return halfLogDetDifference - halfLogDetTwoWorld;
 }
 
 bool SemanticSlam::pairElsewhere(const std::vector<std::size_t>& records) {
@@ -927,7 +949,8 @@ void SemanticSlam::confirmIfDue(int landmark, std::size_t r, std::vector<FactorI
   landmarks_[landmark].weakPrior.reset();
 }
 
-void SemanticSlam::mergeDuplicateLandmarks(const std::vector<bool>& seen, std::vector<std::size_t>& touched,
+void SemanticSlam::mergeDuplicateLandmarks(const std::vector<bool>& seen, int landmarksBeforeStep,
+                                           bool mergesKeptApart, std::vector<std::size_t>& touched,
                                            std::vector<FactorIndex>& removed, std::vector<int>& heldByPrior) {
   // (§5) A landmark P merges into an active landmark L when the difference of their positions passes the χ² gate
   // under their joint marginal and "one landmark" explains it better than a second, uniformly placed one:
@@ -1033,6 +1056,7 @@ void SemanticSlam::mergeDuplicateLandmarks(const std::vector<bool>& seen, std::v
     const std::vector<int> stepsOfP = stepsOn(p);
     std::optional<int> best;
     double bestScore = unassigned_.logCartesianDensity();
+    double bestHalfLogDetDifference = 0.0;
     for (int l : targetsOf(p)) {
       if (!mayMerge(p, stepsOfP, l)) continue;
       const Vector difference = position(p) - position(l);
@@ -1056,8 +1080,14 @@ void SemanticSlam::mergeDuplicateLandmarks(const std::vector<bool>& seen, std::v
       if (score <= bestScore) continue;
       best = l;
       bestScore = score;
+      bestHalfLogDetDifference = logDiagonal.sum();
     }
     if (!best) continue;
+    if (provisional && mergesKeptApart && *best < landmarksBeforeStep &&
+        mergeInformation(p, bestHalfLogDetDifference) > options_.anchoringInformation) {
+      keepApartFromMapped(p, landmarksBeforeStep);  // (§10, branch B) a loop closure by a merge, refused
+      continue;
+    }
     if (provisional) {
       mergeLandmark(p, *best, touched, removed);
     } else {
@@ -1068,7 +1098,7 @@ void SemanticSlam::mergeDuplicateLandmarks(const std::vector<bool>& seen, std::v
   }
 }
 
-void SemanticSlam::updateLifecycle(int k, int landmarksBeforeStep) {
+void SemanticSlam::updateLifecycle(int k, int landmarksBeforeStep, bool mergesKeptApart) {
   std::vector<std::size_t> touched;
   std::vector<FactorIndex> removed;
   // Confirmations: the step's assigned detections count towards M; a confirmed landmark loses its weak prior.
@@ -1088,7 +1118,7 @@ void SemanticSlam::updateLifecycle(int k, int landmarksBeforeStep) {
     if (unassigned_.inField(inSensor) && lifecycle_.passedInField(j)) dropLandmark(j, touched);
   }
   std::vector<int> heldByPrior;
-  mergeDuplicateLandmarks(seen, touched, removed, heldByPrior);
+  mergeDuplicateLandmarks(seen, landmarksBeforeStep, mergesKeptApart, touched, removed, heldByPrior);
   applyEdits(std::move(touched), std::move(removed), heldByPrior);
   if (options_.labelSplit) splitLandmarks(seen);
 }

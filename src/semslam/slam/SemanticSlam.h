@@ -66,8 +66,9 @@
 //
 // A step is processed in two halves, beginStep (steps 1-2, the joint assignment found but not applied) and
 // completeStep (the rest), so that a run can be forked between them with a different decision on the step's
-// anchoring pairings (keepApart, pairElsewhere): LoopClosureBranches.h keeps two or three such branches and the
-// one the data favour (docs/association-front-end.md §10). addStep is the two halves in one.
+// anchoring pairings (keepApart, pairElsewhere) and anchoring merges (keepMergesApart): LoopClosureBranches.h
+// keeps two or three such branches and the one the data favour (docs/association-front-end.md §10). addStep is the
+// two halves in one.
 //
 // Invariants: landmark indices are dense, 0-based, in creation order, and are the landmark ids of every output
 // (a dropped or merged landmark keeps its index and its variable, held by its weak prior, but leaves the map and
@@ -145,7 +146,11 @@ struct SemanticSlamOptions {
   /// detection off null at most this many seconds before it (a re-sighting of a tracked object, not a loop
   /// closure); 0: never, two or more on null as in §6b (docs/association-front-end.md §6c; opt-in)
   double nullEscapeWindow = 0.0;
-  double anchoringInformation = 2.0;  ///< §10: a pairing anchors when ½ ln det(S R⁻¹) exceeds this (nats)
+  double anchoringInformation = 2.0;  ///< §10: a pairing anchors when ½ ln det(S R⁻¹) exceeds this (nats), a
+                                      ///< merge when SemanticSlam::mergeInformation does
+  /// §10: branch B of a split keeps apart the step's anchoring merges too (SemanticSlam::keepMergesApart), so that
+  /// it is the step without any loop closure; false: only its anchoring pairings, as before session 35.
+  bool loopClosureApartKeepsMerges = true;
   /// BirthRule::Unassigned: how the step's joint assignment scores an association (§4). Unset: Joint where a step
   /// assignment is scored (BirthRule::Unassigned and a strategy that decides, not known), Independent elsewhere,
   /// where nothing reads it (resolvedAssignmentScore). Set to Joint, it needs such options.
@@ -235,6 +240,11 @@ class SemanticSlam {
   /// active before the step (not only the one it was given: under the uncertainty that made the pairing anchor, the
   /// merge test would otherwise pair it with the next look-alike in reach).
   void keepApart(const std::vector<std::size_t>& records);
+  /// (§10, branch B) Nor may the begun step close a loop by a merge: where the merge test (§5) would put a
+  /// provisional landmark into a landmark active before the step and the merge is anchoring, mergeInformation above
+  /// options.anchoringInformation, the merge is refused and the provisional landmark is kept apart from every landmark
+  /// active before the step, as keepApart's are. With keepApart, the begun step closes no loop at all.
+  void keepMergesApart();
   /// (§10, the third branch) The begun step's `records` may not take the landmarks the joint assignment gave them:
   /// each loses that landmark from its candidates, and the step's joint assignment is found again, so a record
   /// takes its next-best landmark (or starts one, where the unassigned hypothesis is next). Returns whether some
@@ -339,13 +349,23 @@ class SemanticSlam {
   void applyEdits(std::vector<std::size_t> touched, std::vector<FactorIndex> removed,
                   const std::vector<int>& heldByPrior = {}, const Values& newLandmarks = Values());
   /// Step 6 (§5) after step `k`'s solve: confirmations, drops of landmarks in the field, merges; one update.
-  void updateLifecycle(int k, int landmarksBeforeStep);
+  void updateLifecycle(int k, int landmarksBeforeStep, bool mergesKeptApart);
   void dropLandmark(int landmark, std::vector<std::size_t>& touched);
   void mergeLandmark(int landmark, int into, std::vector<std::size_t>& touched, std::vector<FactorIndex>& removed);
   /// Merge tests (§5, §5c) of every provisional landmark and every confirmed one `seen` at this step against the
-  /// active landmarks within the sensor's range of it; confirmed landmarks merged away go to `heldByPrior`.
-  void mergeDuplicateLandmarks(const std::vector<bool>& seen, std::vector<std::size_t>& touched,
-                               std::vector<FactorIndex>& removed, std::vector<int>& heldByPrior);
+  /// active landmarks within the sensor's range of it; confirmed landmarks merged away go to `heldByPrior`. With
+  /// `mergesKeptApart` (keepMergesApart), an anchoring merge into one of the `landmarksBeforeStep` is refused.
+  void mergeDuplicateLandmarks(const std::vector<bool>& seen, int landmarksBeforeStep, bool mergesKeptApart,
+                               std::vector<std::size_t>& touched, std::vector<FactorIndex>& removed,
+                               std::vector<int>& heldByPrior);
+  /// (§10) How much merging provisional landmark `p` into another tells about the state, the merge test's analogue
+  /// of a pairing's I = ½ ln det(S R⁻¹): I = ½ ln det(Σ_d (2 R_w)⁻¹), with `halfLogDetDifference` = ½ ln det Σ_d (the
+  /// covariance of the two positions' difference, §5) and R_w = J R Jᵀ the world-position covariance of p's last
+  /// detection (UnassignedHypothesis::logBackProjectionJacobian). About 0 when the two positions are known relative
+  /// to each other as well as two detections fix them; several nats when they were mapped far apart in time.
+  double mergeInformation(int p, double halfLogDetDifference) const;
+  /// (§10) `landmark` is an object not mapped before the step: never merged with a landmark active before it.
+  void keepApartFromMapped(int landmark, int landmarksBeforeStep);
   /// (§5d) Every active landmark `seen` at this step whose detections' labels say it holds two objects splits: the
   /// detections of the second move to a new landmark at their own position (LandmarkSplit.h); one update.
   void splitLandmarks(const std::vector<bool>& seen);
@@ -436,6 +456,7 @@ class SemanticSlam {
     int landmarksBeforeStep = 0;
     std::vector<int> assignedLandmark;      // jointAssignment() of the step's records
     std::vector<std::size_t> keptApart;     // keepApart()'s records
+    bool mergesKeptApart = false;           // keepMergesApart()
   };
   std::optional<PendingStep> pending_;
 
