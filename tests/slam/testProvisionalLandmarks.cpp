@@ -301,8 +301,8 @@ TEST(ProvisionalLandmarks, KeepMergesApartRefusesAnAnchoringMergeAndKeepsTheLand
       EXPECT_EQ(second.createdLandmark, 2) << tau;
       EXPECT_EQ(apart->lifecycle().state(2), State::Provisional) << tau;
       EXPECT_EQ(apart->chosenAssociation(second).first, 2) << tau;
-      // Kept apart for good: the next step sees L where P and L both are, and P still does not merge into L.
-      apart->addStep(setup.step(5));
+      // Kept apart for good: the next step (no detection) tests P against L again, and P still does not merge.
+      apart->addStep(setup.step(6));
       EXPECT_NE(apart->lifecycle().state(2), State::Merged) << tau;
     } else {
       EXPECT_EQ(apart->lifecycle().state(2), State::Merged) << tau;

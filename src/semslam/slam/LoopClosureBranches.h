@@ -11,7 +11,7 @@
 //             which the anchoring detections start provisional landmarks, never merged with the landmarks they
 //             were paired with (SemanticSlam::keepApart), and no provisional landmark closes the loop by a merge at
 //             step k either (SemanticSlam::keepMergesApart; SemanticSlamOptions::loopClosureApartKeepsMerges): the
-//             step without any loop closure.
+//             step without its closures (a confirmed duplicate's merge, §5c, is not refused).
 //   branch C  (SemanticSlamOptions::loopClosureNextBest; on by default for mm-nh, nextBest()) a fork in which the
 //             anchoring detections may not take the landmarks they were paired with, so they take their next-best
 //             ones (SemanticSlam::pairElsewhere): the other look-alike; opened only where some detection then has

@@ -149,7 +149,7 @@ struct SemanticSlamOptions {
   double anchoringInformation = 2.0;  ///< §10: a pairing anchors when ½ ln det(S R⁻¹) exceeds this (nats), a
                                       ///< merge when SemanticSlam::mergeInformation does
   /// §10: branch B of a split keeps apart the step's anchoring merges too (SemanticSlam::keepMergesApart), so that
-  /// it is the step without any loop closure; false: only its anchoring pairings, as before session 35.
+  /// it closes no loop by a provisional landmark's merge either; false: only its anchoring pairings, as before.
   bool loopClosureApartKeepsMerges = true;
   /// BirthRule::Unassigned: how the step's joint assignment scores an association (§4). Unset: Joint where a step
   /// assignment is scored (BirthRule::Unassigned and a strategy that decides, not known), Independent elsewhere,
@@ -243,7 +243,8 @@ class SemanticSlam {
   /// (§10, branch B) Nor may the begun step close a loop by a merge: where the merge test (§5) would put a
   /// provisional landmark into a landmark active before the step and the merge is anchoring, mergeInformation above
   /// options.anchoringInformation, the merge is refused and the provisional landmark is kept apart from every landmark
-  /// active before the step, as keepApart's are. With keepApart, the begun step closes no loop at all.
+  /// active before the step, as keepApart's are. With keepApart, the begun step closes no loop by a pairing or by a
+  /// provisional landmark's merge (a confirmed duplicate's merge, §5c, is not refused).
   void keepMergesApart();
   /// (§10, the third branch) The begun step's `records` may not take the landmarks the joint assignment gave them:
   /// each loses that landmark from its candidates, and the step's joint assignment is found again, so a record
