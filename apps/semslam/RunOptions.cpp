@@ -24,6 +24,19 @@ void addRunMethodOptions(CLI::App* command, RunMethodArguments& arguments) {
                       "(0: off; docs/association-front-end.md §6)")
       ->check(CLI::Range(0, 1000))
       ->capture_default_str();
+  command
+      ->add_option_function<double>(
+          "--relinearize-threshold",
+          [&arguments](double threshold) { arguments.options.relinearizeThreshold = threshold; },
+          "paper B's methods, incremental back end: relinearize a variable whose update exceeds this (max-norm; "
+          "default 0.1, iSAM2's)")
+      ->check(CLI::NonNegativeNumber);
+  command
+      ->add_option_function<int>(
+          "--relinearize-skip", [&arguments](int skip) { arguments.options.relinearizeSkip = skip; },
+          "paper B's methods, incremental back end: check for relinearization every this many updates (default 10, "
+          "iSAM2's; docs/association-front-end.md §10)")
+      ->check(CLI::Range(1, 1000000));
   addSemanticSlamOptions(command, arguments.options.slam);
   command->add_flag("--no-covariances", arguments.noCovariances,
                     "skip the marginal covariance of every pose (no NEES, no ellipses; faster)");

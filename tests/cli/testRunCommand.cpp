@@ -333,6 +333,9 @@ TEST(RunCommand, LoopClosureBranchesAreListedInBranchesCsv) {
   EXPECT_EQ(fileText(runNoisy("apart-keeps-merges", "--loop-closure-apart-keeps-merges") / "associations.csv"),
             fileText(nextBest / "associations.csv"));
   runNoisy("apart-merges", "--no-loop-closure-apart-keeps-merges");
+  // iSAM2's relinearization defaults given explicitly are the default run (MethodOptions::relinearizeSkip).
+  EXPECT_EQ(fileText(runNoisy("relinearize", "--relinearize-threshold 0.1 --relinearize-skip 10") / "associations.csv"),
+            fileText(nextBest / "associations.csv"));
   const fs::path oneOpen = runNoisy("one-open", "--loop-closure-open-splits 1");
   EXPECT_NE(fileText(oneOpen / "branches.csv"), fileText(nextBest / "branches.csv"));
   for (const BranchRow& split : branchRows(oneOpen)) {
@@ -351,6 +354,9 @@ TEST(RunCommand, LoopClosureBranchesAreListedInBranchesCsv) {
         // Switch rounds (RunMethod.h): a mixture to switch and the incremental back end.
         "--method ml --switch-rounds 5", "--method mm --smoother batch --switch-rounds 5",
         "--method mm-nh --switch-rounds -1",
+        // Relinearization (RunMethod.h): paper B's incremental back end, a skip of at least 1, a threshold >= 0.
+        "--method hybrid --relinearize-skip 1", "--method mm-nh --smoother batch --relinearize-threshold 0.01",
+        "--method mm-nh --relinearize-skip 0", "--method mm-nh --relinearize-threshold -1",
         // The null escape window (SemanticSlam.h): seconds >= 0, and the escape it widens on.
         "--method mm-nh --null-escape-window -1", "--method mm-nh --no-null-escape --null-escape-window 1",
         // The joint assignment score (SemanticSlam.h): a step assignment to score, and a known name.

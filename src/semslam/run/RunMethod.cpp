@@ -1,6 +1,7 @@
 #include "semslam/run/RunMethod.h"
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 
@@ -21,9 +22,11 @@ void runSemanticSlam(const MeasurementLog& log, const MethodOptions& options, co
                      MethodRun& run) {
   SemanticSlamOptions slamOptions = options.slam;
   slamOptions.strategy = associationStrategy(options.method);
-  if (options.smoother || options.switchRounds > 0) {
+  if (options.smoother || options.switchRounds > 0 || options.relinearizeThreshold || options.relinearizeSkip) {
     IncrementalSmootherParams incremental;
     incremental.maxSwitchRounds = options.switchRounds;
+    incremental.relinearizeThreshold = options.relinearizeThreshold.value_or(incremental.relinearizeThreshold);
+    incremental.relinearizeSkip = options.relinearizeSkip.value_or(incremental.relinearizeSkip);
     slamOptions.smoother = smootherFactory(options.smoother.value_or(SmootherKind::Incremental), {}, incremental);
   }
 
@@ -126,6 +129,23 @@ MethodRun runMethod(const MeasurementLog& log, const MethodOptions& options, con
     if (options.smoother == SmootherKind::Batch) {
       throw std::invalid_argument("switch rounds apply to the incremental back end: the batch back end re-chooses "
                                   "every mixture at every Gauss-Newton iterate");
+    }
+  }
+  if (options.relinearizeThreshold || options.relinearizeSkip) {
+    if (isHybrid(options.method)) {
+      throw std::invalid_argument("the relinearization options apply to paper B's incremental back end: " +
+                                  methodName(options.method) + " has its own");
+    }
+    if (options.smoother == SmootherKind::Batch) {
+      throw std::invalid_argument("the relinearization options apply to the incremental back end: the batch back "
+                                  "end relinearizes everything at every Gauss-Newton iterate");
+    }
+    if (options.relinearizeThreshold && !(*options.relinearizeThreshold >= 0.0 &&
+                                          std::isfinite(*options.relinearizeThreshold))) {
+      throw std::invalid_argument("the relinearization threshold must be finite and >= 0");
+    }
+    if (options.relinearizeSkip && *options.relinearizeSkip < 1) {
+      throw std::invalid_argument("the relinearization skip must be >= 1 (1: check at every update)");
     }
   }
   if (options.slam.decideOnTrueHistory && isHybrid(options.method)) {  // (known: SemanticSlam refuses it)
