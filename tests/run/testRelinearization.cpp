@@ -14,24 +14,12 @@
 
 #include "semslam/core/InputError.h"
 #include "semslam/run/RunMethod.h"
-#include "semslam/sim/GeneratedPath.h"
-#include "semslam/sim/SemanticSimulator.h"
 #include "support/KittiTrackingReadout.h"
+#include "support/SmallSemanticRun.h"
 #include "support/TestData.h"
 
 namespace semslam {
 namespace {
-
-MeasurementLog smallRun() {
-  PathOptions path;
-  path.steps = 30;
-  std::mt19937 rng(5);
-  SemanticSimOptions options;
-  options.classes = 3;
-  options.landmarks = 6;
-  options.misclassification = 0.1;
-  return simulateSemantic(generatePath(path, rng), options, 5);
-}
 
 MethodRun runWith(const MeasurementLog& log, Method method, std::optional<double> threshold,
                   std::optional<int> skip, std::optional<SmootherKind> smoother = std::nullopt) {
@@ -46,7 +34,7 @@ MethodRun runWith(const MeasurementLog& log, Method method, std::optional<double
 }
 
 TEST(Relinearization, IsRefusedWithoutPaperBsIncrementalBackEndOrWithValuesThatMakeNoSense) {
-  const MeasurementLog log = smallRun();
+  const MeasurementLog log = test::smallSemanticLog();
   EXPECT_THROW(runWith(log, Method::Hybrid, std::nullopt, 1), std::invalid_argument);
   EXPECT_THROW(runWith(log, Method::HybridGeometric, 0.01, std::nullopt), std::invalid_argument);
   EXPECT_THROW(runWith(log, Method::MaximumLikelihood, std::nullopt, 1, SmootherKind::Batch), std::invalid_argument);
@@ -64,17 +52,10 @@ TEST(Relinearization, IsRefusedWithoutPaperBsIncrementalBackEndOrWithValuesThatM
 }
 
 TEST(Relinearization, TheDefaultsGivenAreTheDefaultRunBitForBit) {
-  const MeasurementLog log = smallRun();
+  const MeasurementLog log = test::smallSemanticLog();
   const MethodRun a = runWith(log, Method::MaxMixtureNullHypothesis, std::nullopt, std::nullopt);
   const MethodRun b = runWith(log, Method::MaxMixtureNullHypothesis, 0.1, 10);
-  ASSERT_EQ(a.result.poses.size(), b.result.poses.size());
-  for (std::size_t k = 0; k < a.result.poses.size(); ++k) {
-    const auto& pa = std::get<SE2>(a.result.poses[k]);
-    const auto& pb = std::get<SE2>(b.result.poses[k]);
-    EXPECT_EQ(pa.translation().x(), pb.translation().x());
-    EXPECT_EQ(pa.translation().y(), pb.translation().y());
-    EXPECT_EQ(pa.theta(), pb.theta());
-  }
+  test::expectSamePlanarTrajectory(a, b);
 }
 
 TEST(Relinearization, AtEveryUpdatePutsTheParkedCarsOfKittiTracking0003BackOnTheirLandmarks) {

@@ -9,24 +9,12 @@
 #include <stdexcept>
 
 #include "semslam/run/RunMethod.h"
-#include "semslam/sim/GeneratedPath.h"
-#include "semslam/sim/SemanticSimulator.h"
 #include "support/KittiTrackingReadout.h"
+#include "support/SmallSemanticRun.h"
 #include "support/TestData.h"
 
 namespace semslam {
 namespace {
-
-MeasurementLog smallRun() {
-  PathOptions path;
-  path.steps = 30;
-  std::mt19937 rng(5);
-  SemanticSimOptions options;
-  options.classes = 3;
-  options.landmarks = 6;
-  options.misclassification = 0.1;
-  return simulateSemantic(generatePath(path, rng), options, 5);
-}
 
 MethodRun runWith(const MeasurementLog& log, Method method, int switchRounds,
                   std::optional<SmootherKind> smoother = std::nullopt) {
@@ -40,7 +28,7 @@ MethodRun runWith(const MeasurementLog& log, Method method, int switchRounds,
 }
 
 TEST(SwitchRounds, AreRefusedWhereThereIsNoMixtureOrNoIncrementalBackEnd) {
-  const MeasurementLog log = smallRun();
+  const MeasurementLog log = test::smallSemanticLog();
   for (Method method : {Method::Known, Method::MaximumLikelihood, Method::Gpda, Method::Hybrid}) {
     EXPECT_THROW(runWith(log, method, 5), std::invalid_argument) << methodName(method);
   }
@@ -52,21 +40,14 @@ TEST(SwitchRounds, AreRefusedWhereThereIsNoMixtureOrNoIncrementalBackEnd) {
 }
 
 TEST(SwitchRounds, ZeroIsTheDefaultRunBitForBit) {
-  const MeasurementLog log = smallRun();
+  const MeasurementLog log = test::smallSemanticLog();
   MethodOptions defaults;
   defaults.method = Method::MaxMixtureNullHypothesis;
   defaults.runFolder = false;
   defaults.poseCovariances = false;
   const MethodRun a = runMethod(log, defaults);
   const MethodRun b = runWith(log, Method::MaxMixtureNullHypothesis, 0, SmootherKind::Incremental);
-  ASSERT_EQ(a.result.poses.size(), b.result.poses.size());
-  for (std::size_t k = 0; k < a.result.poses.size(); ++k) {
-    const auto& pa = std::get<SE2>(a.result.poses[k]);
-    const auto& pb = std::get<SE2>(b.result.poses[k]);
-    EXPECT_EQ(pa.translation().x(), pb.translation().x());
-    EXPECT_EQ(pa.translation().y(), pb.translation().y());
-    EXPECT_EQ(pa.theta(), pb.theta());
-  }
+  test::expectSamePlanarTrajectory(a, b);
 }
 
 TEST(SwitchRounds, PutTheParkedCarsOfKittiTracking0003BackOnTheirLandmarks) {
