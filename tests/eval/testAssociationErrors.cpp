@@ -146,9 +146,49 @@ TEST(AssociationErrors, OnlyMovingClutterLeavesTheFalsePositiveShareUndefined) {
   EXPECT_EQ(e.pairsSameEstimate, 0u);
 }
 
+TEST(AssociationErrors, HeaderExampleTheLostRealDetectionsByWhereTheyWent) {
+  const auto e = evaluate(make({{a, 1}, {a, 1}, {a, 1}, {a, 2}, {b, 1}, {b, std::nullopt}, {c, 3}}));
+  EXPECT_EQ(e.realCorrect, 4u);
+  EXPECT_EQ(e.realOnUnmatchedEstimateCount, 1u);  // a on 2, which the matching gives to no true landmark
+  EXPECT_EQ(e.realOnAnotherLandmarkCount, 1u);    // b on 1, a's estimate
+  EXPECT_EQ(e.realUnassignedCount, 1u);           // b on the null hypothesis
+  EXPECT_DOUBLE_EQ(e.accuracyReal, 4.0 / 7.0);
+  EXPECT_DOUBLE_EQ(e.realOnUnmatchedEstimate, 1.0 / 7.0);
+  EXPECT_DOUBLE_EQ(e.realOnAnotherLandmark, 1.0 / 7.0);
+  EXPECT_DOUBLE_EQ(e.realUnassigned, 1.0 / 7.0);
+}
+
+TEST(AssociationErrors, TheLostSharesAndAccuracyRealPartitionTheRealDetections) {
+  // Every real detection is counted exactly once: right, unassigned, on another landmark's estimate or on an
+  // unmatched one; clutter and unknown truth enter none of the four.
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> truth(kUnknownTruth, 5), estimate(-1, 7);  // kNotALandmark = -1 between
+  for (int trial = 0; trial < 50; ++trial) {
+    std::vector<DetectionAssociation> d;
+    std::size_t real = 0;
+    for (int i = 0; i < 40; ++i) {
+      const int t = truth(rng);
+      const int e = estimate(rng);
+      d.push_back({t, e < 0 ? std::nullopt : std::optional<int>(e)});
+      if (t >= 0) ++real;
+    }
+    const AssociationErrors x = evaluate(d);
+    ASSERT_EQ(x.realTotal, real);
+    EXPECT_EQ(x.realCorrect + x.realUnassignedCount + x.realOnAnotherLandmarkCount + x.realOnUnmatchedEstimateCount,
+              real);
+    if (real > 0) {
+      EXPECT_NEAR(x.accuracyReal + x.realUnassigned + x.realOnAnotherLandmark + x.realOnUnmatchedEstimate, 1.0,
+                  1e-12);
+    }
+  }
+}
+
 TEST(AssociationErrors, UndefinedRatiosAreNaN) {
   const auto onlyClutter = evaluate(make({{kClutter, std::nullopt}}));
   EXPECT_TRUE(std::isnan(onlyClutter.accuracyReal));
+  EXPECT_TRUE(std::isnan(onlyClutter.realUnassigned));
+  EXPECT_TRUE(std::isnan(onlyClutter.realOnAnotherLandmark));
+  EXPECT_TRUE(std::isnan(onlyClutter.realOnUnmatchedEstimate));
   EXPECT_TRUE(std::isnan(onlyClutter.pairwisePrecision));
   const auto noClutter = evaluate(make({{a, 1}}));
   EXPECT_TRUE(std::isnan(noClutter.clutterRejected));

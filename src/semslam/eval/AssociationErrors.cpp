@@ -47,16 +47,28 @@ AssociationErrors evaluateAssociationErrors(const std::vector<DetectionAssociati
     }
     ++errors.realTotal;
     ++perTruth[d.truth];
-    if (!d.estimate) continue;
+    if (!d.estimate) {
+      ++errors.realUnassignedCount;
+      continue;
+    }
     const std::optional<int> matched = matching.truthOf(*d.estimate);
-    if (matched == d.truth) ++errors.realCorrect;
-    else if (matched) ++onAnotherLandmarksEstimate[{d.truth, *d.estimate}];
-    else ++onUnmatchedEstimate[{d.truth, *d.estimate}];
+    if (matched == d.truth) {
+      ++errors.realCorrect;
+    } else if (matched) {
+      ++onAnotherLandmarksEstimate[{d.truth, *d.estimate}];
+      ++errors.realOnAnotherLandmarkCount;
+    } else {
+      ++onUnmatchedEstimate[{d.truth, *d.estimate}];
+      ++errors.realOnUnmatchedEstimateCount;
+    }
     ++perEstimateAndTruth[{*d.estimate, d.truth}];
     ++perEstimate[*d.estimate];
     ++perTruthAssigned[d.truth];
   }
   errors.accuracyReal = ratio(errors.realCorrect, errors.realTotal);
+  errors.realUnassigned = ratio(errors.realUnassignedCount, errors.realTotal);
+  errors.realOnAnotherLandmark = ratio(errors.realOnAnotherLandmarkCount, errors.realTotal);
+  errors.realOnUnmatchedEstimate = ratio(errors.realOnUnmatchedEstimateCount, errors.realTotal);
   errors.clutterRejected = ratio(errors.clutterUnassigned, errors.clutter);
   errors.clutterRejectedMoving = ratio(errors.clutterMovingUnassigned, errors.clutterMoving);
   errors.clutterRejectedFalsePositive = ratio(errors.clutterFalsePositiveUnassigned, errors.clutterFalsePositive);

@@ -35,6 +35,16 @@
 //                       shared), b has 2 of 2 detections on a's estimate → merged = 1. Truths [a a a a a] on
 //                       estimates [1 1 1 2 2]: 1 ↔ a, 2 is matched to nothing, a has 2 of 5 on it → split = 1.
 // The 10 % share is of all the landmark's real detections (assigned or not).
+//   Where the real detections that accuracy_real does not count went: three shares of the real detections that,
+//   with accuracy_real, sum to 1 (each NaN without real detections).
+//   real_unassigned             on no landmark (the null hypothesis, a dropped provisional landmark, rejected);
+//   real_on_another_landmark    on an estimate the matching gives to another true landmark (the kind of error
+//                               landmarks_merged counts landmark by landmark);
+//   real_on_unmatched_estimate  on an estimate the matching gives to no true landmark: a second estimate of their
+//                               object (the kind landmarks_split counts), or one that holds mostly clutter.
+//                       Example: truths [a a a a b b c] on estimates [1 1 1 2 1 ∅ 3]: the matching gives 1 to
+//                       a (3 shared) and 3 to c; correct a a a and c (accuracy_real 4/7); a on 2 (unmatched) 1/7,
+//                       b on 1 (a's) 1/7, b on ∅ 1/7.
 
 #include <cstddef>
 #include <limits>
@@ -69,6 +79,13 @@ struct AssociationErrors {
 
   std::size_t landmarksMerged = 0;
   std::size_t landmarksSplit = 0;
+
+  double realUnassigned = kNaN;           ///< shares of realTotal (header comment); with accuracyReal they sum to 1
+  double realOnAnotherLandmark = kNaN;
+  double realOnUnmatchedEstimate = kNaN;
+  std::size_t realUnassignedCount = 0;
+  std::size_t realOnAnotherLandmarkCount = 0;
+  std::size_t realOnUnmatchedEstimateCount = 0;
 };
 
 /// The share of a landmark's detections above which a merge or split counts (with at least kMinimumDetections).

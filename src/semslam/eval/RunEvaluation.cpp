@@ -69,6 +69,9 @@ void setAssociationErrorMetrics(RunMetrics& metrics, const AssociationErrors& er
   metrics.clutterRejectedFalsePositive = errors.clutterRejectedFalsePositive;
   metrics.landmarksMerged = asCount(errors.landmarksMerged);
   metrics.landmarksSplit = asCount(errors.landmarksSplit);
+  metrics.realUnassigned = errors.realUnassigned;
+  metrics.realOnAnotherLandmark = errors.realOnAnotherLandmark;
+  metrics.realOnUnmatchedEstimate = errors.realOnUnmatchedEstimate;
 }
 
 void setDecisionMetrics(RunMetrics& metrics, const DecisionAccuracy& decisions) {

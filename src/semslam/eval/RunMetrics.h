@@ -37,6 +37,8 @@ struct RunMetrics {
   double clutterRejected = kNotApplicable;
   double clutterRejectedMoving = kNotApplicable, clutterRejectedFalsePositive = kNotApplicable;
   std::optional<long long> landmarksMerged, landmarksSplit;
+  double realUnassigned = kNotApplicable, realOnAnotherLandmark = kNotApplicable,
+         realOnUnmatchedEstimate = kNotApplicable;
   // Decisions on the true history (DecisionAccuracy.h): runs with SemanticSlamOptions::decideOnTrueHistory only.
   double decisionAccuracyReal = kNotApplicable, decisionClutterRejected = kNotApplicable;
   std::optional<long long> decisionsResightingElsewhere, decisionsResightingUnassigned, decisionsFirstSightingForced;
