@@ -29,13 +29,13 @@ void addRunMethodOptions(CLI::App* command, RunMethodArguments& arguments) {
           "--relinearize-threshold",
           [&arguments](double threshold) { arguments.options.relinearizeThreshold = threshold; },
           "paper B's methods, incremental back end: relinearize a variable whose update exceeds this (max-norm; "
-          "default 0.1, iSAM2's)")
+          "default 0.05; slam/SemanticSlamSmoother.h)")
       ->check(CLI::NonNegativeNumber);
   command
       ->add_option_function<int>(
           "--relinearize-skip", [&arguments](int skip) { arguments.options.relinearizeSkip = skip; },
-          "paper B's methods, incremental back end: check for relinearization every this many updates (default 10, "
-          "iSAM2's; docs/association-front-end.md §10)")
+          "paper B's methods, incremental back end: check for relinearization every this many updates (default 1; "
+          "slam/SemanticSlamSmoother.h, docs/association-front-end.md §10)")
       ->check(CLI::Range(1, 1000000));
   addSemanticSlamOptions(command, arguments.options.slam);
   command->add_flag("--no-covariances", arguments.noCovariances,

@@ -28,6 +28,7 @@
 #include "semslam/io/MeasurementLogFile.h"
 #include "semslam/io/OutputTarget.h"
 #include "semslam/io/StagedFolder.h"
+#include "semslam/slam/SemanticSlamSmoother.h"
 #include "semslam/solve/SmootherFactory.h"
 #include "semslam/study/RobustnessStudy.h"
 #include "semslam/study/RobustnessStudyFolder.h"
@@ -108,7 +109,7 @@ void runRobustness(const RobustnessArguments& arguments) {
   options.threads = arguments.threads;
   options.maxSteps = arguments.maxSteps;
   options.slam = arguments.slam;
-  options.slam.smoother = smootherFactory(parseSmootherKind(arguments.smoother));
+  options.slam.smoother = smootherFactory(parseSmootherKind(arguments.smoother), {}, semanticSlamSmootherParams());
   options.modelMisclassificationFloor = arguments.modelFloor;
   try {
     validateRobustnessOptions(options);

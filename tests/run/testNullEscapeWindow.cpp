@@ -3,7 +3,10 @@
 // T seconds before it. On KITTI tracking 0003 at 1 Hz with odometry noise × 5 the default run leaves four parked
 // cars' re-sightings on the null hypothesis, each the one detection of its car there (the batch back end puts all
 // four on their cars, as ml does): T = 1 s, one keyframe period, tries them and ends where the batch back end does;
-// T = 0.5 s, shorter than any gap between two keyframes, tries nothing and is the default run bit for bit.
+// T = 0.5 s, shorter than any gap between two keyframes, tries nothing and is the default run bit for bit. The
+// incremental runs here use GTSAM's relinearization (every 10 updates, 0.1), the default until session 38, under
+// which those re-sightings stay on null: paper B's default (every update, 0.05) puts them on their cars by itself
+// (testRelinearization.cpp).
 
 #include <gtest/gtest.h>
 
@@ -27,6 +30,10 @@ MethodRun runWith(const MeasurementLog& log, double window, bool nullEscape = tr
   options.slam.nullEscapeWindow = window;
   options.slam.nullEscape = nullEscape;
   options.smoother = smoother;
+  if (smoother != SmootherKind::Batch) {
+    options.relinearizeThreshold = 0.1;
+    options.relinearizeSkip = 10;
+  }
   options.runFolder = false;
   options.poseCovariances = false;
   return runMethod(log, options);

@@ -9,6 +9,7 @@
 #include "semslam/io/RunMetricsFile.h"
 #include "semslam/io/RunOutputFromResult.h"
 #include "semslam/slam/LoopClosureBranches.h"
+#include "semslam/slam/SemanticSlamSmoother.h"
 
 namespace semslam {
 namespace {
@@ -23,7 +24,7 @@ void runSemanticSlam(const MeasurementLog& log, const MethodOptions& options, co
   SemanticSlamOptions slamOptions = options.slam;
   slamOptions.strategy = associationStrategy(options.method);
   if (options.smoother || options.switchRounds > 0 || options.relinearizeThreshold || options.relinearizeSkip) {
-    IncrementalSmootherParams incremental;
+    IncrementalSmootherParams incremental = semanticSlamSmootherParams();
     incremental.maxSwitchRounds = options.switchRounds;
     incremental.relinearizeThreshold = options.relinearizeThreshold.value_or(incremental.relinearizeThreshold);
     incremental.relinearizeSkip = options.relinearizeSkip.value_or(incremental.relinearizeSkip);

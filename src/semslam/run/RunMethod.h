@@ -50,7 +50,7 @@ struct MethodOptions {
   std::optional<SmootherKind> smoother;  ///< empty: the method's default back end (above)
   int switchRounds = 0;                  ///< incremental back end, mm and mm-nh: IncrementalSmootherParams::maxSwitchRounds
   /// Paper B's methods on the incremental back end: IncrementalSmootherParams' fluid relinearization (iSAM2's β and
-  /// its skip); empty: the smoother's defaults, GTSAM's (0.1, every 10 updates). The front end gates each step on
+  /// its skip); empty: paper B's defaults (slam/SemanticSlamSmoother.h: 0.05, every update). The front end gates each step on
   /// the estimate and its marginal at the linearization point, so how fresh that point is can change decisions
   /// (docs/association-front-end.md §10, "The incremental estimate after a large closure").
   std::optional<double> relinearizeThreshold;

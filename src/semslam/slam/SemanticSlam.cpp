@@ -14,6 +14,7 @@
 #include "semslam/factors/MaxMixtureFactor.h"
 #include "semslam/models/HypothesisComponent.h"
 #include "semslam/models/ValueConversions.h"
+#include "semslam/slam/SemanticSlamSmoother.h"
 #include "semslam/solve/HungarianAssignment.h"
 #include "semslam/solve/Optimizer.h"
 
@@ -100,7 +101,8 @@ SemanticSlam::SemanticSlam(const LogHeader& header, SemanticSlamOptions options)
       lifecycle_(options_.provisional),
       orientationUnobservable_(factory_.landmarksHavePose() && header.sensor.kind != SensorKind::RelativePose),
       preselection_(header, gate_),
-      smoother_(options_.smoother ? options_.smoother() : smootherFactory(SmootherKind::Incremental)()) {
+      smoother_(options_.smoother ? options_.smoother()
+                                   : smootherFactory(SmootherKind::Incremental, {}, semanticSlamSmootherParams())()) {
   if (!(options_.nullWeight > 0.0 && options_.nullWeight < 1.0)) {
     throw std::invalid_argument("null-hypothesis weight must be in (0, 1)");
   }

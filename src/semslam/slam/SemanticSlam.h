@@ -137,7 +137,7 @@ struct SemanticSlamOptions {
                                   ///< the other candidates and, with BirthRule::Unassigned, the unassigned
                                   ///< hypothesis) reaches this: an unambiguous one; 0: every detection
   LandmarkLifecycle::Rule provisional;  ///< BirthRule::Unassigned: the M-of-N rule of provisional landmarks
-  SmootherFactory smoother;       ///< the back end; empty: the IncrementalSmoother
+  SmootherFactory smoother;       ///< the back end; empty: the IncrementalSmoother with semanticSlamSmootherParams()
   bool candidatePreselection = true;  ///< test only: false tests every landmark (docs/association-front-end.md §7)
   bool labelSplit = false;        ///< BirthRule::Unassigned: a landmark whose labels say it holds two objects
                                   ///< splits (LandmarkSplit.h); opt-in, measured in docs/association-front-end.md §5d

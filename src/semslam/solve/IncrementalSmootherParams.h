@@ -18,7 +18,8 @@
 // The defaults are GTSAM's own ISAM2Params defaults (0.1, 10, 0.001); docs/incremental-smoother.md gives the
 // figures for these and for the stricter 0.01 / 1 setting the iSAM2 reference run used. `semslam optimize
 // --incremental` and `semslam run` (paper B's methods) take the first two as --relinearize-threshold and
-// --relinearize-skip (MethodOptions, docs/association-front-end.md §10).
+// --relinearize-skip (MethodOptions, docs/association-front-end.md §10). Paper B's methods start from their own
+// settings, 0.05 at every update (slam/SemanticSlamSmoother.h: graphs of max-mixtures, swept there).
 //
 //   reorderFillGrowth     need-based reordering: when the factor holds more than this many times the entries per
 //                         variable it held right after the last full ordering, the next update re-orders and
