@@ -17,6 +17,7 @@
 #include "semslam/run/RunMethod.h"
 #include "semslam/sim/GeneratedPath.h"
 #include "semslam/sim/SemanticSimulator.h"
+#include "semslam/solve/IncrementalSmootherParams.h"
 #include "support/KittiTrackingReadout.h"
 #include "support/TestData.h"
 
@@ -31,8 +32,9 @@ MethodRun runWith(const MeasurementLog& log, double window, bool nullEscape = tr
   options.slam.nullEscape = nullEscape;
   options.smoother = smoother;
   if (smoother != SmootherKind::Batch) {
-    options.relinearizeThreshold = 0.1;
-    options.relinearizeSkip = 10;
+    const IncrementalSmootherParams gtsam;  // GTSAM's relinearization: IncrementalSmootherParams' defaults
+    options.relinearizeThreshold = gtsam.relinearizeThreshold;
+    options.relinearizeSkip = gtsam.relinearizeSkip;
   }
   options.runFolder = false;
   options.poseCovariances = false;

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "semslam/run/RunMethod.h"
+#include "semslam/solve/IncrementalSmootherParams.h"
 #include "support/KittiTrackingReadout.h"
 #include "support/SmallSemanticRun.h"
 #include "support/TestData.h"
@@ -25,8 +26,9 @@ MethodRun runWith(const MeasurementLog& log, Method method, int switchRounds,
   options.switchRounds = switchRounds;
   options.smoother = smoother;
   if (gtsamRelinearization) {
-    options.relinearizeThreshold = 0.1;
-    options.relinearizeSkip = 10;
+    const IncrementalSmootherParams gtsam;  // GTSAM's relinearization: IncrementalSmootherParams' defaults
+    options.relinearizeThreshold = gtsam.relinearizeThreshold;
+    options.relinearizeSkip = gtsam.relinearizeSkip;
   }
   options.runFolder = false;
   options.poseCovariances = false;
