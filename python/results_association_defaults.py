@@ -38,35 +38,40 @@ TRACKING_10HZ = [0, 5]
 def _logs(semslam, data, scratch):
     """(family, name, log path) of every log present; converted or simulated into `scratch`. Families: "MRCLAM",
     "Lost in the Woods", "KITTI", "KITTI tracking 1 Hz", "KITTI tracking 10 Hz"."""
-    commands = []
+    def log(name):
+        return os.path.join(scratch, f"defaults_{name}.jsonl")
+
+    made = []  # (family, name, the command that writes log(name))
     mrclam = os.path.join(data, "mrclam", "MRCLAM_Dataset6")
     if os.path.isdir(mrclam):
-        commands += [("MRCLAM", f"r{robot}-s{seed}",
-                      [semslam, "convert", "mrclam", mrclam, "--robot", str(robot), "--classes", "3",
-                       "--misclassification", "0.1", "--keyframe-period", "1", "--seed", str(seed)])
-                     for robot in ROBOTS for seed in LABEL_SEEDS]
+        made += [("MRCLAM", f"r{robot}-s{seed}",
+                  [semslam, "convert", "mrclam", mrclam, "--robot", str(robot), "--classes", "3",
+                   "--misclassification", "0.1", "--keyframe-period", "1", "--seed", str(seed), "--out",
+                   log(f"r{robot}-s{seed}")])
+                 for robot in ROBOTS for seed in LABEL_SEEDS]
     woods = os.path.join(data, "utias-lost-in-the-woods")
     if os.path.isdir(woods):
-        commands.append(("Lost in the Woods", "litw", [semslam, "convert", "utias-lost-in-the-woods", woods,
-                                                       "--classes", "3", "--misclassification", "0.1",
-                                                       "--keyframe-period", "1"]))
+        made.append(("Lost in the Woods", "litw", [semslam, "convert", "utias-lost-in-the-woods", woods, "--classes",
+                                                   "3", "--misclassification", "0.1", "--keyframe-period", "1",
+                                                   "--out", log("litw")]))
     for sequence, seed in KITTI_LOGS:
         trajectory = os.path.join(data, "kitti-odometry-poses", f"{sequence}.txt")
         if os.path.exists(trajectory):
-            commands.append(("KITTI", f"kitti{sequence}-seed{seed}",
-                             kitti_simulation(semslam, trajectory, "OUT", seed)[:-2]))
+            name = f"kitti{sequence}-seed{seed}"
+            made.append(("KITTI", name, kitti_simulation(semslam, trajectory, log(name), seed)))
     tracking = os.path.join(data, "kitti-tracking")
     if os.path.isdir(tracking):
-        commands += [("KITTI tracking 1 Hz", f"tracking{sequence:04d}_1hz",
-                      [semslam, "convert", "kitti-tracking", tracking, "--sequence", str(sequence), "--keyframe-period",
-                       "1", "--odometry", "noisy", "--odom-noise-scale", "5", "--seed", "1"])
-                     for sequence in TRACKING_SEQUENCES]
-        commands += [("KITTI tracking 10 Hz", f"tracking{sequence:04d}_10hz",
-                      [semslam, "convert", "kitti-tracking", tracking, "--sequence", str(sequence), "--odometry",
-                       "orbslam"]) for sequence in TRACKING_10HZ]
-    logs = [(family, name, os.path.join(scratch, f"defaults_{name}.jsonl")) for family, name, _ in commands]
+        made += [("KITTI tracking 1 Hz", f"tracking{sequence:04d}_1hz",
+                  [semslam, "convert", "kitti-tracking", tracking, "--sequence", str(sequence), "--keyframe-period",
+                   "1", "--odometry", "noisy", "--odom-noise-scale", "5", "--seed", "1", "--out",
+                   log(f"tracking{sequence:04d}_1hz")])
+                 for sequence in TRACKING_SEQUENCES]
+        made += [("KITTI tracking 10 Hz", f"tracking{sequence:04d}_10hz",
+                  [semslam, "convert", "kitti-tracking", tracking, "--sequence", str(sequence), "--odometry",
+                   "orbslam", "--out", log(f"tracking{sequence:04d}_10hz")]) for sequence in TRACKING_10HZ]
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, (os.cpu_count() or 2))) as pool:
-        list(pool.map(lambda item: run_checked(item[0][2] + ["--out", item[1][2]]), zip(commands, logs)))
+        list(pool.map(lambda item: run_checked(item[2]), made))
+    logs = [(family, name, log(name)) for family, name, _ in made]
     return logs
 
 
@@ -86,11 +91,11 @@ def _label(setting):
 
 
 def _mrclam_cells(rows, defaults):
-    """MRCLAM's cells of one setting: mean `da_accuracy_real`, its paired difference from the defaults' runs, mean
-    ATE, mean `clutter_rejected`."""
+    """MRCLAM's cells of one setting: mean `da_accuracy_real`, its paired difference from the defaults' runs
+    (`defaults`; None for the defaults' own row), mean ATE, mean `clutter_rejected`."""
     names = sorted(rows)
     accuracy = [rows[name]["da_accuracy_real"] for name in names]
-    if rows is defaults:
+    if defaults is None:
         difference = "–"
     else:
         s = summary([rows[name]["da_accuracy_real"] - defaults[name]["da_accuracy_real"] for name in names])
@@ -127,7 +132,7 @@ def defaults_table(settings, results):
     for s, setting in enumerate(settings):
         cells = []
         if "MRCLAM" in families:
-            cells += _mrclam_cells(results[(s, "MRCLAM")], results[(0, "MRCLAM")])
+            cells += _mrclam_cells(results[(s, "MRCLAM")], results[(0, "MRCLAM")] if s else None)
         if "Lost in the Woods" in families:
             m = results[(s, "Lost in the Woods")]["litw"]
             cells.append(f"{cell(m['da_accuracy_real'])} / {cell(m['ate_rmse'])}")
