@@ -59,6 +59,13 @@ void addSemanticSlamOptions(CLI::App* command, SemanticSlamOptions& options) {
                       "birth unassigned: expected unassigned detections (births + clutter) per step")
       ->check(CLI::Range(1e-9, 1e9))
       ->capture_default_str();
+  command
+      ->add_option_function<double>(
+          "--unassigned-rate-weight", [&options](double weight) { options.unassignedRateWeight = weight; },
+          "birth unassigned: estimate the rate from the run (detections decided unassigned per step), "
+          "--unassigned-rate counting as this many steps of prior data (docs/association-front-end.md §10, \"mu "
+          "from the run\"; default: the rate is constant)")
+      ->check(CLI::Range(1e-9, 1e9));
   command->add_flag("--no-warm-start{false}", options.warmStart,
                     "mm, mm-nh: choose mixture components at the odometry prediction (docs/max-mixtures.md)");
   command->add_flag("--no-null-escape{false}", options.nullEscape,

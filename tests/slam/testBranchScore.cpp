@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "semslam/slam/BranchScore.h"
 
@@ -47,8 +48,10 @@ Detection detection(const Point2& position, const Matrix& covariance, int label,
   return d;
 }
 
-/// A `known` run whose first step sees `first` and whose second step sees `second`, both from the same pose.
-double scoreOfTwoSteps(const LogHeader& h, const Detection& first, const Detection& second) {
+/// A `known` run whose first step sees `first` and whose second step sees `second`, both from the same pose, scored
+/// at its own μ (1) or at `unassignedRate`.
+double scoreOfTwoSteps(const LogHeader& h, const Detection& first, const Detection& second,
+                       std::optional<double> unassignedRate = std::nullopt) {
   SemanticSlamOptions options;
   options.strategy = AssociationStrategy::Known;
   SemanticSlam run(h, options);
@@ -59,7 +62,7 @@ double scoreOfTwoSteps(const LogHeader& h, const Detection& first, const Detecti
   two.detections.push_back(second);
   run.addStep(one);
   run.addStep(two);
-  return branchScore(run);
+  return unassignedRate ? branchScore(run, *unassignedRate) : branchScore(run);
 }
 
 /// Two detections, labelled 0 and 1, of objects `firstId` and `secondId`.
@@ -98,6 +101,27 @@ TEST(BranchScore, ADetectionOnNoFactorScoresAsALandmarkSeenOnce) {
   Detection clutter = far;
   clutter.truthId = kNotALandmark;
   EXPECT_NEAR(scoreOfTwoSteps(rangeBearing, near, far), scoreOfTwoSteps(rangeBearing, near, clutter), 1e-6);
+}
+
+// The branches of a split are scored at one μ (LoopClosureBranches; μ estimated from the run differs between
+// them): at μ instead of the run's own μ = 1, every active landmark's prior ln ρ and every unexplained detection's
+// ln λ move by ln μ, so the score moves by −2 (L + U) ln μ, L active landmarks and U detections on no factor.
+TEST(BranchScore, AtAnotherRateTheScoreMovesByTheLandmarksAndTheUnexplainedDetections) {
+  const Detection first = detection(kFirst, kFirstCovariance, 0, 0);
+  const Detection second = detection(kSecond, kSecondCovariance, 1, 0);
+  Detection apart = second, clutter = second;
+  apart.truthId = 1;
+  clutter.truthId = kNotALandmark;
+  for (double rate : {0.05, 0.3, 4.0}) {
+    const double shift = -2.0 * std::log(rate);
+    EXPECT_NEAR(scoreOfTwoSteps(header(), first, second, rate) - scoreOfTwoSteps(header(), first, second),
+                1.0 * shift, 1e-6) << "one landmark, μ = " << rate;
+    EXPECT_NEAR(scoreOfTwoSteps(header(), first, apart, rate) - scoreOfTwoSteps(header(), first, apart),
+                2.0 * shift, 1e-6) << "two landmarks, μ = " << rate;
+    EXPECT_NEAR(scoreOfTwoSteps(header(), first, clutter, rate) - scoreOfTwoSteps(header(), first, clutter),
+                2.0 * shift, 1e-6) << "a landmark and a detection on no factor, μ = " << rate;
+  }
+  EXPECT_THROW(scoreOfTwoSteps(header(), first, second, 0.0), std::invalid_argument);
 }
 
 }  // namespace

@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -28,6 +29,7 @@
 #include <stdexcept>
 
 #include "EstimateEquality.h"
+#include "semslam/slam/BranchScore.h"
 #include "semslam/slam/LoopClosureBranches.h"
 
 namespace semslam {
@@ -161,6 +163,27 @@ TEST(LoopClosureBranches, ABranchOpenUntilTheTrueObjectIsReSeenKeepsTheLookAlike
   EXPECT_FALSE(split.scoreC);  // turned off
   // Every object's detections on one landmark of their own.
   expectEveryObjectOnALandmarkOfItsOwn(run.slam());
+}
+
+// μ estimated from the run (UnassignedHypothesis.h): branch B starts landmarks where A pairs, so the two runs'
+// estimates part at the split; both are scored at the μ of the history they share, the run's before the step that
+// opened the split (docs/association-front-end.md §10, "μ from the run").
+TEST(LoopClosureBranches, WithAnEstimatedRateTheBranchesAreScoredAtTheRateBeforeTheSplit) {
+  const LookAlikes scenario;
+  SemanticSlamOptions options = optionsWithWindow(3);
+  options.loopClosureNextBest = false;
+  options.loopClosureOpenSplits = 1;
+  options.unassignedRateWeight = 5.0;
+  LoopClosureBranches run(scenario.header, options);
+  for (int k = 0; k < LookAlikes::kReturn; ++k) run.addStep(scenario.step(k));
+  const double rateBeforeSplit = run.slam().unassignedHypothesis().rate();
+  for (int k = LookAlikes::kReturn; k <= LookAlikes::kReturn + 3; ++k) run.addStep(scenario.step(k));
+  ASSERT_EQ(run.splits().size(), 1u);  // closed by the last step, the kept run not moved since
+  const LoopClosureBranches::Split& split = run.splits().front();
+  ASSERT_EQ(split.kept, LoopClosureBranches::Branch::Apart);
+  EXPECT_NE(run.slam().unassignedHypothesis().rate(), rateBeforeSplit);
+  EXPECT_EQ(split.scoreB, branchScore(run.slam(), rateBeforeSplit));
+  EXPECT_GT(std::abs(branchScore(run.slam()) - split.scoreB), 10.0 * kBranchScoreTolerance);
 }
 
 /// The third branch's scenario: ml (one landmark per detection, so a pairing stays as the step made it; under mm-nh

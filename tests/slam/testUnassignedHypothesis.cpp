@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -64,6 +66,78 @@ TEST(UnassignedHypothesis, DensityIsTheRateOverTheFieldAreaForARelativePositionS
   const double expected = std::log(2.0 / (std::numbers::pi * 100.0 / 2.0));
   EXPECT_NEAR(unassigned.logDensity(setup.detectionAt(Vector2(1.0, 2.0))), expected, 1e-12);
   EXPECT_NEAR(unassigned.logDensity(setup.detectionAt(Vector2(7.0, -1.0))), expected, 1e-12);
+}
+
+// μ from the run (docs/association-front-end.md §10, "μ from the run"): the Gamma(w μ₀, w) prior's posterior mean
+// after T counted steps with n unassigned detections, (w μ₀ + n) / (w + T); the density moves with it.
+TEST(UnassignedHypothesis, AnEstimatedRateIsThePosteriorMeanOfTheCountedSteps) {
+  OneLandmark setup;
+  UnassignedHypothesis estimated(setup.log.header, 2.0, 4.0);
+  const double logVolume = std::log(std::numbers::pi * 100.0 / 2.0);
+  const Detection anywhere = setup.detectionAt(Vector2(1.0, 2.0));
+  EXPECT_DOUBLE_EQ(estimated.rate(), 2.0);  // the prior mean before any step
+  for (int count : {3, 0, 1}) estimated.countStep(count);
+  EXPECT_NEAR(estimated.rate(), (4.0 * 2.0 + 4.0) / (4.0 + 3.0), 1e-15);
+  EXPECT_NEAR(estimated.logDensity(anywhere), std::log(12.0 / 7.0) - logVolume, 1e-12);
+  for (int step = 0; step < 10000; ++step) estimated.countStep(step % 4 == 0 ? 1 : 0);  // the data's rate, 0.25
+  EXPECT_NEAR(estimated.rate(), 0.25, 2e-3);
+
+  // withRate: the same field at a constant μ, which counting leaves alone.
+  UnassignedHypothesis fixed = estimated.withRate(0.5);
+  fixed.countStep(7);
+  EXPECT_DOUBLE_EQ(fixed.rate(), 0.5);
+  EXPECT_NEAR(fixed.logDensity(anywhere), std::log(0.5) - logVolume, 1e-12);
+  UnassignedHypothesis constant(setup.log.header, 2.0);
+  constant.countStep(5);
+  EXPECT_DOUBLE_EQ(constant.rate(), 2.0);
+
+  for (double weight : {0.0, -1.0, std::numeric_limits<double>::infinity()}) {
+    EXPECT_THROW(UnassignedHypothesis(setup.log.header, 1.0, weight), std::invalid_argument) << weight;
+  }
+  EXPECT_THROW(estimated.countStep(-1), std::invalid_argument);
+  EXPECT_THROW(static_cast<void>(estimated.withRate(0.0)), std::invalid_argument);
+}
+
+// Through the front end: after T steps with nothing unassigned, μ̂ = w μ₀ / (w + T), and the switch point of the
+// next detection is d*(S, λ) at that μ̂, not at μ₀: a detection between the two switch points goes to the
+// landmark under the estimate and would start a new one under the constant μ₀ (whose switch point is nearer).
+TEST(UnassignedHypothesis, TheFrontEndSwitchesAtTheDistanceOfTheEstimatedRate) {
+  const OneLandmark setup;
+  constexpr int kEmptySteps = 8;
+  constexpr double kWeight = 2.0;
+  const Odometry still{SE2(), Vector3(0.01, 0.01, 1e-8).asDiagonal().toDenseMatrix()};
+  const double s = 0.25 + 0.01 * kEmptySteps + 0.09 + 0.04;  // pose + odometry + landmark + detection
+  const auto run = [&](const Vector2& z, std::optional<double> weight) {
+    SemanticSlamOptions options;
+    options.strategy = AssociationStrategy::MaximumLikelihood;
+    options.unassignedRateWeight = weight;
+    SemanticSlam slam(setup.log.header, options);
+    slam.addStep(TimeStep{0.0, std::nullopt, {}, setup.robot});
+    for (int k = 1; k < kEmptySteps; ++k) slam.addStep(TimeStep{double(k), still, {}, setup.robot});
+    EXPECT_NEAR(slam.unassignedHypothesis().rate(), weight ? kWeight / (kWeight + kEmptySteps) : 1.0, 1e-15);
+    slam.addStep(TimeStep{double(kEmptySteps), still, {setup.detectionAt(z)}, setup.robot});
+    return slam;
+  };
+  const UnassignedHypothesis field(setup.log.header);
+  const double logVolumeTerm = field.logDensity(setup.detectionAt(setup.predicted()));  // ln(1 / V)
+  const double estimatedRate = kWeight / (kWeight + kEmptySteps);
+  const double dConstant = std::sqrt(switchDistanceSquared(logVolumeTerm, 2, 2.0 * std::log(s)));
+  const double dEstimated =
+      std::sqrt(switchDistanceSquared(logVolumeTerm + std::log(estimatedRate), 2, 2.0 * std::log(s)));
+  ASSERT_GT(dEstimated, dConstant * 1.05);
+  const Vector2 direction = Vector2(1.0, -1.0).normalized();
+  const auto at = [&](double distance) { return Vector2(setup.predicted() + distance * std::sqrt(s) * direction); };
+  for (double factor : {0.97, 1.03}) {
+    const SemanticSlam estimated = run(at(factor * dEstimated), kWeight);
+    EXPECT_EQ(estimated.detections().at(0).assigned.has_value(), factor < 1.0) << "at " << factor << " d*(μ̂)";
+    // one step more counted, with the detection's decision
+    EXPECT_NEAR(estimated.unassignedHypothesis().rate(),
+                (kWeight + (factor < 1.0 ? 0.0 : 1.0)) / (kWeight + kEmptySteps + 1), 1e-15);
+  }
+  const SemanticSlam constant = run(at(0.5 * (dConstant + dEstimated)), std::nullopt);
+  EXPECT_FALSE(constant.detections().at(0).assigned);
+  const SemanticSlam estimated = run(at(0.5 * (dConstant + dEstimated)), kWeight);
+  EXPECT_EQ(estimated.detections().at(0).assigned, std::optional<int>(0));
 }
 
 TEST(UnassignedHypothesis, RangeBearingDensityIsTheCartesianDensityTimesTheRange) {

@@ -12,13 +12,39 @@ constexpr double kMinimumRange = 1e-3;  // m: a detection at the sensor has no b
 
 }  // namespace
 
-UnassignedHypothesis::UnassignedHypothesis(const LogHeader& header, double rate)
+UnassignedHypothesis::UnassignedHypothesis(const LogHeader& header, double rate, std::optional<double> rateWeight)
     : kind_(header.sensor.kind),
       dimension_(header.dimension),
       rate_(rate),
+      rateWeight_(rateWeight),
       specRange_(header.sensor.maxRange),
       specFieldOfView_(header.sensor.fieldOfView) {
   if (!(rate > 0.0) || !std::isfinite(rate)) throw std::invalid_argument("unassigned rate must be positive and finite");
+  if (rateWeight && (!(*rateWeight > 0.0) || !std::isfinite(*rateWeight))) {
+    throw std::invalid_argument("the unassigned rate's prior weight must be positive and finite (steps)");
+  }
+}
+
+double UnassignedHypothesis::rate() const {
+  if (!rateWeight_) return rate_;
+  return (*rateWeight_ * rate_ + unassignedCounted_) / (*rateWeight_ + stepsCounted_);  // the Gamma posterior mean
+}
+
+void UnassignedHypothesis::countStep(int unassignedDetections) {
+  if (unassignedDetections < 0) throw std::invalid_argument("countStep: a negative count of unassigned detections");
+  if (!rateWeight_) return;
+  unassignedCounted_ += unassignedDetections;
+  stepsCounted_ += 1.0;
+}
+
+UnassignedHypothesis UnassignedHypothesis::withRate(double rate) const {
+  if (!(rate > 0.0) || !std::isfinite(rate)) throw std::invalid_argument("unassigned rate must be positive and finite");
+  UnassignedHypothesis fixed = *this;
+  fixed.rate_ = rate;
+  fixed.rateWeight_.reset();
+  fixed.unassignedCounted_ = 0.0;
+  fixed.stepsCounted_ = 0.0;
+  return fixed;
 }
 
 UnassignedHypothesis::Polar UnassignedHypothesis::polarOf(const Detection& detection) const {
@@ -84,7 +110,7 @@ double UnassignedHypothesis::logCartesianDensity() const {
     const double psi = std::max(elevationSpan(), 1e-3);
     logVolume = 3.0 * std::log(rMax) - std::log(3.0) + std::log(phi) + std::log(2.0 * std::sin(psi / 2.0));
   }
-  return std::log(rate_) - logVolume;
+  return std::log(rate()) - logVolume;
 }
 
 bool UnassignedHypothesis::inField(const Vector& position) const {

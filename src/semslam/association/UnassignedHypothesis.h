@@ -5,7 +5,12 @@
 //
 //   p(z | unassigned) = λ(z_g) · P₀(s),   λ = ρ · J(z_g),   ρ = μ / V,
 //
-//   μ      expected unassigned detections (births + clutter) per step (`rate`, default 1);
+//   μ      expected unassigned detections (births + clutter) per step: the constant `rate` (default 1), or, with a
+//          prior weight w (`rateWeight`), estimated from the run as trackers estimate an unknown clutter rate,
+//            μ̂ = (w μ₀ + n) / (w + T),
+//          the posterior mean of a Poisson rate under a Gamma(w μ₀, w) prior: μ₀ = `rate` counted as w steps of
+//          prior data, n the detections the run decided unassigned over its T steps so far (countStep(); a
+//          decision at step k counts from step k + 1 on). docs/association-front-end.md §10, "μ from the run";
 //   V      the sensor field's area (2D) or volume (3D) in the world: a sector of radius r_max and opening Φ,
 //          V = Φ r_max² / 2; in 3D a spherical sector, V = (r_max³ / 3) · Φ · 2 sin(Ψ / 2) with Ψ the elevation span;
 //   J      the Jacobian of the back-projection, since births are uniform in the world, not in the sensor's
@@ -23,6 +28,8 @@
 // The switch point (§2): a landmark with predicted measurement ẑ and innovation covariance S beats this
 // hypothesis exactly when d² = (z − ẑ)ᵀ S⁻¹ (z − ẑ) < d*², d*² = −2 ln(λ (2π)^{m/2} |S|^{1/2} P₀(s) / P(s | j)).
 
+#include <optional>
+
 #include "semslam/models/MeasurementLog.h"
 
 namespace semslam {
@@ -31,8 +38,19 @@ class UnassignedHypothesis {
  public:
   static constexpr double kDefaultRate = 1.0;
 
-  /// Throws std::invalid_argument for a rate that is not positive and finite.
-  UnassignedHypothesis(const LogHeader& header, double rate = kDefaultRate);
+  /// `rate` is μ, or μ₀ when `rateWeight` (w, in steps) is given: μ is then estimated from countStep() as above.
+  /// Throws std::invalid_argument for a rate or a weight that is not positive and finite.
+  UnassignedHypothesis(const LogHeader& header, double rate = kDefaultRate,
+                       std::optional<double> rateWeight = std::nullopt);
+
+  /// The μ in use: the constant rate, or the estimate μ̂ from the steps counted so far.
+  double rate() const;
+  /// Counts one completed step whose joint assignment left `unassignedDetections` detections unassigned (no-op for
+  /// a constant rate). Throws std::invalid_argument for a negative count.
+  void countStep(int unassignedDetections);
+  /// A copy whose μ is the constant `rate` (the field's extents as they stand): two branches of a split are scored
+  /// with the rate of the history they share (slam/BranchScore.h). Throws as the constructor does.
+  UnassignedHypothesis withRate(double rate) const;
 
   /// Widens the data-defined extents (range, bearing, elevation) by one detection's geometry.
   void observe(const Detection& detection);
@@ -69,7 +87,10 @@ class UnassignedHypothesis {
 
   SensorKind kind_;
   int dimension_;
-  double rate_;
+  double rate_;                        // μ, or μ₀ with a weight
+  std::optional<double> rateWeight_;   // w: set where μ is estimated
+  double unassignedCounted_ = 0.0;     // n
+  double stepsCounted_ = 0.0;          // T
   double specRange_, specFieldOfView_;
   double observedRange_ = 0.0, observedBearing_ = 0.0, observedElevation_ = 0.0;  // largest |.| seen
   bool observedAny_ = false;

@@ -42,17 +42,20 @@ double labelScore(const SemanticSlam& run, const Values& estimate) {
 
 /// −2 ln of the unassigned density λ(z) of every detection on no factor: under §1's model a detection that no
 /// landmark explains comes from the unassigned density (its label's P₀ is in labelScore).
-double unexplainedScore(const SemanticSlam& run) {
+double unexplainedScore(const SemanticSlam& run, const UnassignedHypothesis& unassigned) {
   double score = 0.0;
   for (const DetectionRecord& record : run.detections()) {
-    if (record.onNoFactor()) score -= 2.0 * run.unassignedHypothesis().logDensity(record.measurement);
+    if (record.onNoFactor()) score -= 2.0 * unassigned.logDensity(record.measurement);
   }
   return score;
 }
 
 }  // namespace
 
-double branchScore(const SemanticSlam& run) {
+double branchScore(const SemanticSlam& run) { return branchScore(run, run.unassignedHypothesis().rate()); }
+
+double branchScore(const SemanticSlam& run, double unassignedRate) {
+  const UnassignedHypothesis unassigned = run.unassignedHypothesis().withRate(unassignedRate);
   const FactorGraph factors = run.smoother().factors();
   OptimizerParams params;
   params.chi2DecreaseTolerance = kBranchScoreTolerance;
@@ -74,8 +77,8 @@ double branchScore(const SemanticSlam& run) {
   // Each active landmark's prior is ρ; an orientation prior's position part, in the model above, stands in for it
   // there and is taken out (an inactive landmark keeps it: with nothing else on its variable it integrates to 1).
   const double landmarkPrior =
-      -2.0 * run.unassignedHypothesis().logLandmarkDensity() - run.orientationPriorPositionScore().value_or(0.0);
-  return laplaceEvidenceScore(model, estimate) + activeLandmarks * landmarkPrior + unexplainedScore(run) +
+      -2.0 * unassigned.logLandmarkDensity() - run.orientationPriorPositionScore().value_or(0.0);
+  return laplaceEvidenceScore(model, estimate) + activeLandmarks * landmarkPrior + unexplainedScore(run, unassigned) +
          labelScore(run, estimate);
 }
 

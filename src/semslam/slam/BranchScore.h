@@ -39,7 +39,13 @@ namespace semslam {
 /// hundreds (docs/association-front-end.md §10, "The score's precision, and ties").
 inline constexpr double kBranchScoreTolerance = 1e-3;
 
-/// The score above of `run` at its estimate converged to kBranchScoreTolerance (the run is unchanged).
+/// The score above of `run` at its estimate converged to kBranchScoreTolerance (the run is unchanged), with ρ and λ
+/// at the run's own μ (UnassignedHypothesis::rate).
 double branchScore(const SemanticSlam& run);
+/// The same with ρ and λ at μ = `unassignedRate`: the branches of one split, whose runs estimate μ each from their
+/// own decisions where μ is estimated, are compared at one rate, the one of the history they share
+/// (LoopClosureBranches; docs/association-front-end.md §10, "μ from the run"). Throws std::invalid_argument for a
+/// rate that is not positive and finite.
+double branchScore(const SemanticSlam& run, double unassignedRate);
 
 }  // namespace semslam

@@ -81,6 +81,7 @@ std::size_t LoopClosureBranches::advance(std::size_t leaf, const TimeStep& step)
   if (window_ > 0 && static_cast<int>(open_.size()) < maximumOpenSplits_) {
     const std::vector<std::size_t> anchoring = run.anchoringDetections();
     if (!anchoring.empty()) {
+      const double rateBeforeStep = run.unassignedHypothesis().rate();  // the branches' shared history's μ
       const int id = nextSplitId_++;
       std::vector<std::pair<int, Branch>> lineage = leaves_[leaf].lineage;
       Leaf apart{run.fork(), lineage};
@@ -98,7 +99,7 @@ std::size_t LoopClosureBranches::advance(std::size_t leaf, const TimeStep& step)
         }
       }
       leaves_[leaf].lineage.emplace_back(id, Branch::AsIs);
-      open_.push_back({id, {run.steps() - 1, 0, 0.0, 0.0, std::nullopt, Branch::AsIs}});
+      open_.push_back({id, {run.steps() - 1, 0, 0.0, 0.0, std::nullopt, Branch::AsIs}, rateBeforeStep});
     }
   }
   run.completeStep();
@@ -111,6 +112,7 @@ std::size_t LoopClosureBranches::advance(std::size_t leaf, const TimeStep& step)
 void LoopClosureBranches::closeOldestSplit(LeafScores& scoreOf) {
   const int id = open_.front().id;
   Split split = open_.front().split;
+  const double unassignedRate = open_.front().unassignedRate;
   open_.erase(open_.begin());
   split.closedAfter = slam().steps() - 1;
   // Each branch scores as its lowest-scoring leaf.
@@ -125,8 +127,8 @@ void LoopClosureBranches::closeOldestSplit(LeafScores& scoreOf) {
     const std::optional<Branch> branch = branchOf(leaf);
     if (!branch) continue;
     std::optional<double>& score = branchScores[static_cast<int>(*branch)];
-    const auto [cached, isNew] = scoreOf.try_emplace(leaf.run.get(), 0.0);
-    if (isNew) cached->second = branchScore(*leaf.run);
+    const auto [cached, isNew] = scoreOf.try_emplace({leaf.run.get(), unassignedRate}, 0.0);
+    if (isNew) cached->second = branchScore(*leaf.run, unassignedRate);
     const double leafScore = cached->second;
     if (!score || leafScore < *score) score = leafScore;
   }

@@ -123,13 +123,14 @@ class LoopClosureBranches {
   struct OpenSplit {
     int id = 0;
     Split split;
+    double unassignedRate = 0.0;  ///< μ of the run that split, before the step: its branches are scored at it
   };
   /// Begins the step in `leaf`, splits it where its step anchors and a split may open, completes it in every
   /// branch. New leaves are inserted after it; returns how many.
   std::size_t advance(std::size_t leaf, const TimeStep& step);
-  /// Each leaf's BranchScore, computed once for all the splits that close after one step (the leaves do not move
-  /// between them).
-  using LeafScores = std::map<const SemanticSlam*, double>;
+  /// Each leaf's BranchScore at one μ, computed once for all the splits that close after one step at that μ (the
+  /// leaves do not move between them; μ differs between splits only where it is estimated from the run).
+  using LeafScores = std::map<std::pair<const SemanticSlam*, double>, double>;
   /// Closes the oldest open split: scores its branches by their leaves (through `scoreOf`), keeps the lowest.
   void closeOldestSplit(LeafScores& scoreOf);
 

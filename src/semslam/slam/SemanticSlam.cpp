@@ -97,7 +97,7 @@ SemanticSlam::SemanticSlam(const LogHeader& header, SemanticSlamOptions options)
       options_(std::move(options)),
       factory_(header),
       gate_(options_.gateConfidence),
-      unassigned_(header, options_.unassignedRate),
+      unassigned_(header, options_.unassignedRate, options_.unassignedRateWeight),
       lifecycle_(options_.provisional),
       orientationUnobservable_(factory_.landmarksHavePose() && header.sensor.kind != SensorKind::RelativePose),
       preselection_(header, gate_),
@@ -279,6 +279,12 @@ void SemanticSlam::completeStep() {
   const std::size_t first = pending.first;
   const int landmarksBeforeStep = pending.landmarksBeforeStep;
   if (jointly) applyJointAssignment(first, pending.assignedLandmark);
+  // μ from the run (§10): the step's detections its joint assignment left unassigned, as finally decided (a branch
+  // that keeps closures apart counts them); a step without a joint assignment counts none.
+  if (jointly || options_.decideOnTrueHistory) {
+    unassigned_.countStep(static_cast<int>(
+        std::count_if(pending.assignedLandmark.begin(), pending.assignedLandmark.end(), [](int j) { return j < 0; })));
+  }
   FactorGraph associations = pending.propagation;
   Values values = pending.newValues;
   std::vector<std::size_t> factorsOfRecord;  // how many of `associations` each of this step's records added

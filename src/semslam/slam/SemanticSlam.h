@@ -125,6 +125,9 @@ struct SemanticSlamOptions {
   AssociationStrategy strategy = AssociationStrategy::MaxMixtureNullHypothesis;
   BirthRule birth = BirthRule::Unassigned;  ///< the default since issue 10 (docs/association-front-end.md §9)
   double unassignedRate = UnassignedHypothesis::kDefaultRate;  ///< μ: unassigned detections expected per step
+  /// Where set, μ is estimated from the run with this prior weight, in steps, on unassignedRate
+  /// (UnassignedHypothesis.h; docs/association-front-end.md §10, "μ from the run"); unset, μ is unassignedRate.
+  std::optional<double> unassignedRateWeight;
   double gateConfidence = AssociationGate::kDefaultConfidence;
   double nullWeight = 0.1;        ///< mm-nh: weight of the null hypothesis (B, sec. IV-C)
   double nullSigmaScale = 100.0;  ///< mm-nh: the null hypothesis's standard deviations over the detection's

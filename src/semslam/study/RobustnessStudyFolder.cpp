@@ -36,6 +36,8 @@ std::string robustnessStudyJson(const RobustnessStudy& study, const RobustnessSt
       {"em_iterations", options.slam.emIterations},
       {"birth", birthRuleName(options.slam.birth)},
       {"unassigned_rate", options.slam.unassignedRate},
+      {"unassigned_rate_weight", options.slam.unassignedRateWeight ? nlohmann::json(*options.slam.unassignedRateWeight)
+                                                                    : nlohmann::json(nullptr)},
       {"smoother", labels.smoother},
       {"warm_start", options.slam.warmStart},
       {"label_split", options.slam.labelSplit},
