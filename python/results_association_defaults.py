@@ -1,8 +1,9 @@
 """docs/results.md section: the sweep behind the unassigned rule's defaults (docs/association-front-end.md §5 and
-§1: μ the unassigned detections expected per step, M the confirmations, Δt their spacing in seconds, the viewpoint
+§1 and §10: μ the unassigned detections expected per step, constant or estimated from the run with a prior weight of
+W steps, M the confirmations, Δt their spacing in seconds, the viewpoint
 rule, N the patience), on more than one log, so that no default rests on one recording. Used by make_results.py.
 
-One setting changes at a time from the defaults (μ = 1, M = 2, Δt = 1 s, no viewpoint rule, N = 10), `mm-nh`, on
+One setting changes at a time from the defaults (μ = 1 constant, M = 2, Δt = 1 s, no viewpoint rule, N = 10), `mm-nh`, on
 MRCLAM Dataset 6 robots 1-5 each converted with label seeds 1-8 (whole recordings, 1 s keyframes, 3 classes, 10 %
 misclassification: 40 runs, since one run's `da_accuracy_real` moves by ±0.05 with its path,
 docs/association-front-end.md §9, and one seed per robot cannot rank settings), Lost in the Woods (1 s keyframes, 3
@@ -21,13 +22,15 @@ from results_association import KITTI_LOGS
 from results_commands import cell, mean_cell, read_metrics, run_checked
 from results_max_mixtures import kitti_simulation
 
-# (flag, values); the default of each is in the list, so its row is the defaults' run.
+# (flag, values); the default of each is in the list, so its row is the defaults' run. None: the flag not given
+# (--unassigned-rate-weight: μ constant unless it is).
 SETTINGS = [("--unassigned-rate", ["0.1", "0.3", "1", "3"]),
+            ("--unassigned-rate-weight", [None, "10", "100", "300"]),
             ("--confirmations", ["2", "3"]),
             ("--confirmation-spacing", ["0.5", "1", "3"]),
             ("--confirmation-viewpoint-sigmas", ["0", "1", "2"]),
             ("--patience", ["5", "10", "20"])]
-DEFAULTS = {"--unassigned-rate": "1", "--confirmations": "2", "--confirmation-spacing": "1",
+DEFAULTS = {"--unassigned-rate": "1", "--unassigned-rate-weight": None, "--confirmations": "2", "--confirmation-spacing": "1",
             "--confirmation-viewpoint-sigmas": "0", "--patience": "10"}
 ROBOTS = [1, 2, 3, 4, 5]
 LABEL_SEEDS = range(1, 9)
@@ -85,9 +88,14 @@ def _settings():
     return rows
 
 
+def setting_flags(setting):
+    """The command-line flags of a setting: each flag with its value, a flag whose value is None left out."""
+    return [item for flag, value in setting.items() if value is not None for item in (flag, value)]
+
+
 def _label(setting):
     changed = [f"{flag} {value}" for flag, value in setting.items() if value != DEFAULTS[flag]]
-    return ", ".join(changed) if changed else "defaults (μ 1, M 2, Δt 1 s, no viewpoint rule, N 10)"
+    return ", ".join(changed) if changed else "defaults (μ 1 constant, M 2, Δt 1 s, no viewpoint rule, N 10)"
 
 
 def _mrclam_cells(rows, defaults):
@@ -160,7 +168,7 @@ def association_defaults_section(semslam, data, scratch):
     settings = _settings()
     jobs = []  # (setting index or "known", family, name, run folder, command)
     for s, setting in enumerate(settings):
-        flags = [item for pair in setting.items() for item in pair]
+        flags = setting_flags(setting)
         for family, name, log in logs:
             out = os.path.join(scratch, f"defaults_{s}_{name}")
             jobs.append((s, family, name, out, [semslam, "run", "--overwrite", "--quiet", "--method", "mm-nh", "--in",
@@ -182,7 +190,7 @@ def association_defaults_section(semslam, data, scratch):
               "build/bin/semslam convert mrclam ../shared/data/mrclam/MRCLAM_Dataset6 --robot R --classes 3 "
               "--misclassification 0.1 --keyframe-period 1 --seed S --out LOG   # R 1-5, S 1-8",
               "build/bin/semslam run --method mm-nh --in LOG --out DIR --no-covariances "
-              "[--unassigned-rate MU] [--confirmations M] [--confirmation-spacing SECONDS] "
+              "[--unassigned-rate MU] [--unassigned-rate-weight W] [--confirmations M] [--confirmation-spacing SECONDS] "
               "[--confirmation-viewpoint-sigmas K] [--patience N]",
               "```",
               "The other logs: the Lost in the Woods conversion of the association section and docs/datasets.md "

@@ -56,6 +56,21 @@ TEST(HostileCli, CountsOutOfTheirRangeAreRefused) {
                 "2^64 - 1");
 }
 
+TEST(HostileCli, AnUnassignedRateWeightThatIsNotAPositiveNumberIsRefused) {
+  const semslam::test::TempDir scratch;
+  const std::string log = scratch.path("a.jsonl");
+  ASSERT_EQ(runSemslam("simulate semantic --steps 3 --out " + log).exitCode, 0);
+  for (const std::string value : {"0", "-1", "inf", "1e400", "abc"}) {
+    expectRefused(runSemslam("run --method mm-nh --in " + log + " --out " + scratch.path("r") +
+                             " --unassigned-rate-weight " + value),
+                  "--unassigned-rate-weight");
+  }
+  expectRefused(runSemslam("run --method mm-nh --in " + log + " --out " + scratch.path("r") +
+                           " --unassigned-rate-weight nan"),
+                "prior weight must be positive and finite");
+  EXPECT_FALSE(fs::exists(scratch.path("r")));
+}
+
 TEST(HostileCli, IntegersAreDecimalNeverOctalOrHexadecimal) {
   // CLI11 reads integers with strtoll(..., 0): "--seed 0467" became seed 311 and "--steps 010" 8 steps, silently
   // (found by the options fuzz harness).

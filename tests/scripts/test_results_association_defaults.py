@@ -24,6 +24,14 @@ class AssociationDefaultsSection(unittest.TestCase):
         self.assertTrue(lines[0].startswith("## The unassigned rule's defaults"))
         self.assertIn("section skipped", lines[2])
 
+    def test_a_flag_without_a_value_is_not_given(self):
+        flags = section.setting_flags(section.DEFAULTS)
+        self.assertNotIn("--unassigned-rate-weight", flags)
+        self.assertEqual(flags[flags.index("--unassigned-rate") + 1], "1")
+        weighted = section.setting_flags(dict(section.DEFAULTS, **{"--unassigned-rate-weight": "100"}))
+        self.assertEqual(weighted[weighted.index("--unassigned-rate-weight") + 1], "100")
+        self.assertEqual(len(weighted), len(flags) + 2)
+
     def test_the_table(self):
         settings = [dict(section.DEFAULTS), dict(section.DEFAULTS, **{"--patience": "5"})]
 
@@ -54,8 +62,8 @@ class AssociationDefaultsSection(unittest.TestCase):
         self.assertEqual(header[6], "KITTI 00 / 07 (2 logs): ATE ≤ 2 × known's, mean ATE [m]")
         self.assertEqual(header[7], "KITTI tracking 1 Hz ×5 (2 seq.)")
         defaults, patience = cells(lines[4]), cells(lines[5])
-        self.assertEqual(defaults, ["defaults (μ 1, M 2, Δt 1 s, no viewpoint rule, N 10)", "0.600", "–", "2.000",
-                                    "0.50", "0.990 / 0.027", "2 of 2, 2.750", "0.800 (1) / 0.700 / 0.600"])
+        self.assertEqual(defaults, ["defaults (μ 1 constant, M 2, Δt 1 s, no viewpoint rule, N 10)", "0.600", "–",
+                                    "2.000", "0.50", "0.990 / 0.027", "2 of 2, 2.750", "0.800 (1) / 0.700 / 0.600"])
         self.assertEqual(patience[0], "--patience 5")
         self.assertEqual(patience[1], "0.567")
         # differences +0.1, 0, −0.2: mean −0.033, one run higher and one lower

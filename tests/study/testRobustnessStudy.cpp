@@ -161,6 +161,7 @@ TEST(StudyCommand, SmallRunWritesItsFilesAndBadInputExitsTwo) {
   for (const char* key : {"gate", "null_sigma_scale", "em_window", "em_iterations", "birth", "unassigned_rate", "warm_start", "smoother"}) {
     EXPECT_TRUE(settings.contains(key)) << key;
   }
+  EXPECT_TRUE(settings.at("unassigned_rate_weight").is_null());  // μ constant unless --unassigned-rate-weight
   for (const char* key : {"threads", "wall_time_s"}) EXPECT_FALSE(settings.contains(key)) << key;  // timings.csv
 
   for (const std::string bad : {"--methods known,magic", "--odom-noise-scale ,", "--odom-noise-scale=-1",

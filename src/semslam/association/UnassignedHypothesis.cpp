@@ -10,6 +10,10 @@ namespace {
 
 constexpr double kMinimumRange = 1e-3;  // m: a detection at the sensor has no bearing
 
+void requirePositiveRate(double rate) {
+  if (!(rate > 0.0) || !std::isfinite(rate)) throw std::invalid_argument("unassigned rate must be positive and finite");
+}
+
 }  // namespace
 
 UnassignedHypothesis::UnassignedHypothesis(const LogHeader& header, double rate, std::optional<double> rateWeight)
@@ -19,7 +23,7 @@ UnassignedHypothesis::UnassignedHypothesis(const LogHeader& header, double rate,
       rateWeight_(rateWeight),
       specRange_(header.sensor.maxRange),
       specFieldOfView_(header.sensor.fieldOfView) {
-  if (!(rate > 0.0) || !std::isfinite(rate)) throw std::invalid_argument("unassigned rate must be positive and finite");
+  requirePositiveRate(rate);
   if (rateWeight && (!(*rateWeight > 0.0) || !std::isfinite(*rateWeight))) {
     throw std::invalid_argument("the unassigned rate's prior weight must be positive and finite (steps)");
   }
@@ -38,7 +42,7 @@ void UnassignedHypothesis::countStep(int unassignedDetections) {
 }
 
 UnassignedHypothesis UnassignedHypothesis::withRate(double rate) const {
-  if (!(rate > 0.0) || !std::isfinite(rate)) throw std::invalid_argument("unassigned rate must be positive and finite");
+  requirePositiveRate(rate);
   UnassignedHypothesis fixed = *this;
   fixed.rate_ = rate;
   fixed.rateWeight_.reset();

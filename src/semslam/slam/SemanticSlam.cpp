@@ -280,7 +280,8 @@ void SemanticSlam::completeStep() {
   const int landmarksBeforeStep = pending.landmarksBeforeStep;
   if (jointly) applyJointAssignment(first, pending.assignedLandmark);
   // μ from the run (§10): the step's detections its joint assignment left unassigned, as finally decided (a branch
-  // that keeps closures apart counts them); a step without a joint assignment counts none.
+  // that keeps closures apart counts them; a step without detections counts as a step with none). A run without a
+  // joint assignment (threshold births, `known`) counts nothing and keeps μ₀.
   if (jointly || options_.decideOnTrueHistory) {
     unassigned_.countStep(static_cast<int>(
         std::count_if(pending.assignedLandmark.begin(), pending.assignedLandmark.end(), [](int j) { return j < 0; })));
