@@ -1,10 +1,10 @@
-"""docs/results.md section: the sweep behind the unassigned rule's defaults (docs/association-front-end.md §5 and
-§1 and §10: μ the unassigned detections expected per step, constant or estimated from the run with a prior weight of
-W steps, M the confirmations, Δt their spacing in seconds, the viewpoint
-rule, N the patience), on more than one log, so that no default rests on one recording. Used by make_results.py.
+"""docs/results.md section: the sweep behind the unassigned rule's defaults (docs/association-front-end.md §5, §1
+and §10: μ the unassigned detections expected per step, constant or estimated from the run with a prior weight of W
+steps, M the confirmations, Δt their spacing in seconds, the viewpoint rule, N the patience), on more than one log, so
+that no default rests on one recording. Used by make_results.py.
 
-One setting changes at a time from the defaults (μ = 1 constant, M = 2, Δt = 1 s, no viewpoint rule, N = 10), `mm-nh`, on
-MRCLAM Dataset 6 robots 1-5 each converted with label seeds 1-8 (whole recordings, 1 s keyframes, 3 classes, 10 %
+One setting changes at a time from the defaults (μ = 1 constant, M = 2, Δt = 1 s, no viewpoint rule, N = 10), `mm-nh`,
+on MRCLAM Dataset 6 robots 1-5 each converted with label seeds 1-8 (whole recordings, 1 s keyframes, 3 classes, 10 %
 misclassification: 40 runs, since one run's `da_accuracy_real` moves by ±0.05 with its path,
 docs/association-front-end.md §9, and one seed per robot cannot rank settings), Lost in the Woods (1 s keyframes, 3
 classes, 10 %), the KITTI 00 and 07 semantic simulations of the association section (seeds 1-8, against `known` on
@@ -30,8 +30,8 @@ SETTINGS = [("--unassigned-rate", ["0.1", "0.3", "1", "3"]),
             ("--confirmation-spacing", ["0.5", "1", "3"]),
             ("--confirmation-viewpoint-sigmas", ["0", "1", "2"]),
             ("--patience", ["5", "10", "20"])]
-DEFAULTS = {"--unassigned-rate": "1", "--unassigned-rate-weight": None, "--confirmations": "2", "--confirmation-spacing": "1",
-            "--confirmation-viewpoint-sigmas": "0", "--patience": "10"}
+DEFAULTS = {"--unassigned-rate": "1", "--unassigned-rate-weight": None, "--confirmations": "2",
+            "--confirmation-spacing": "1", "--confirmation-viewpoint-sigmas": "0", "--patience": "10"}
 ROBOTS = [1, 2, 3, 4, 5]
 LABEL_SEEDS = range(1, 9)
 TRACKING_SEQUENCES = range(11)
@@ -190,8 +190,8 @@ def association_defaults_section(semslam, data, scratch):
               "build/bin/semslam convert mrclam ../shared/data/mrclam/MRCLAM_Dataset6 --robot R --classes 3 "
               "--misclassification 0.1 --keyframe-period 1 --seed S --out LOG   # R 1-5, S 1-8",
               "build/bin/semslam run --method mm-nh --in LOG --out DIR --no-covariances "
-              "[--unassigned-rate MU] [--unassigned-rate-weight W] [--confirmations M] [--confirmation-spacing SECONDS] "
-              "[--confirmation-viewpoint-sigmas K] [--patience N]",
+              "[--unassigned-rate MU] [--unassigned-rate-weight W] [--confirmations M] "
+              "[--confirmation-spacing SECONDS] [--confirmation-viewpoint-sigmas K] [--patience N]",
               "```",
               "The other logs: the Lost in the Woods conversion of the association section and docs/datasets.md "
               "(3 classes, 10 %, 1 s keyframes), the KITTI 00 and 07 simulations of the association section (seeds "
