@@ -44,7 +44,7 @@ constexpr int kNoTruth = -3;
 /// semslam.RunResult (the file comment lists its members).
 struct PythonRunResult {
   std::string method;
-  py::object trajectory, timestamps, landmarks, associations, hypotheses, metrics;
+  py::object trajectory, timestamps, landmarks, associations, hypotheses, metrics, settings;
 };
 
 /// `--flag value...` for one keyword argument, checked against the options `command` knows.
@@ -149,6 +149,7 @@ PythonRunResult toPython(const MeasurementLog& log, const MethodRun& run) {
   result.landmarks = landmarkArrays(run.output);
   result.associations = associationArrays(run.output);
   result.metrics = loads(runMetricsToJson(run.evaluation.metrics));
+  result.settings = loads(run.settings.dump());
   result.hypotheses = py::none();
   if (run.hypothesesJsonl) {
     std::ostringstream text;
@@ -210,6 +211,7 @@ void bindRun(py::module_& module) {
       .def_readonly("associations", &PythonRunResult::associations)
       .def_readonly("hypotheses", &PythonRunResult::hypotheses)
       .def_readonly("metrics", &PythonRunResult::metrics)
+      .def_readonly("settings", &PythonRunResult::settings)
       .def("__repr__", [](const PythonRunResult& r) {
         return "<semslam.RunResult " + r.method + ": " + std::to_string(py::len(r.trajectory)) + " poses>";
       });

@@ -42,6 +42,10 @@ def test_run_equals_the_command_line_tool(cli, logs, tmp_path, log_name, method,
     assert set(result.metrics) == set(expected)
     differing = {key for key in expected if result.metrics[key] != expected[key]}
     assert differing <= WALL_TIMES, f"differ: {sorted(differing - WALL_TIMES)}"
+    # The settings the run was made with: the folder's settings.json but its schema and release.
+    settings = json.loads((tmp_path / "cli" / "settings.json").read_text())
+    assert {settings.pop("schema"), settings.pop("version")} == {"semslam.settings/1", semslam.__version__}
+    assert result.settings == settings
 
     # The arrays hold what the run folder holds.
     with open(tmp_path / "cli" / "trajectory.tum") as stream:

@@ -153,15 +153,23 @@ TEST(StudyCommand, SmallRunWritesItsFilesAndBadInputExitsTwo) {
   EXPECT_EQ(timings.rfind("axis,level,seed,method,rank,time_s,threads,ranks,wall_time_s\n", 0), 0u) << timings;
   EXPECT_EQ(std::count(timings.begin(), timings.end(), '\n'), 1 + 3 * 2);
   const nlohmann::json settings = nlohmann::json::parse(test::fileBytes(out + "/study.json"));
-  EXPECT_EQ(settings["schema"], "semslam.study.robustness/2");
+  EXPECT_EQ(settings["schema"], "semslam.study.robustness/3");
   EXPECT_EQ(settings["version"], std::string(semslam::version()));
   EXPECT_EQ(settings["methods"], "known,mm");
   EXPECT_EQ(settings["runs"], 6);
-  EXPECT_DOUBLE_EQ(settings["null_weight"].get<double>(), 0.2);  // the shared option block (MethodOptions.h)
-  for (const char* key : {"gate", "null_sigma_scale", "em_window", "em_iterations", "birth", "unassigned_rate", "warm_start", "smoother"}) {
-    EXPECT_TRUE(settings.contains(key)) << key;
+  // Each method's settings as its runs were made (run/MethodSettings.h): the shared option block (MethodOptions.h)
+  // with each default resolved for the method.
+  const nlohmann::json& methods = settings.at("method_settings");
+  ASSERT_EQ(methods.size(), 2u);
+  for (const char* method : {"known", "mm"}) {
+    EXPECT_EQ(methods.at(method).at("method"), method);
+    EXPECT_DOUBLE_EQ(methods.at(method).at("association").at("null_weight").get<double>(), 0.2);
+    EXPECT_TRUE(methods.at(method).at("association").at("unassigned_rate_weight").is_null());  // μ constant
+    EXPECT_EQ(methods.at(method).at("pose_covariances"), false);
   }
-  EXPECT_TRUE(settings.at("unassigned_rate_weight").is_null());  // μ constant unless --unassigned-rate-weight
+  EXPECT_EQ(methods.at("known").at("association").at("loop_closure_branches"), 0);
+  EXPECT_EQ(methods.at("mm").at("association").at("loop_closure_branches"), 16);
+  EXPECT_TRUE(settings.contains("smoother"));
   for (const char* key : {"threads", "wall_time_s"}) EXPECT_FALSE(settings.contains(key)) << key;  // timings.csv
 
   for (const std::string bad : {"--methods known,magic", "--odom-noise-scale ,", "--odom-noise-scale=-1",

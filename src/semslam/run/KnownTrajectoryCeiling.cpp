@@ -107,6 +107,9 @@ MethodRun runOnKnownTrajectory(const MeasurementLog& log, const MethodOptions& o
   MethodRun run = runMethod(logOnTrajectory(log, trajectory), options);
   run.result.method += "@known-trajectory";
   run.evaluation.metrics.method = run.result.method;
+  run.settings["on_known_trajectory"] = {{"pose_error_scale", poseErrorScale},
+                                         {"pose_error_draw", draw == PoseErrorDraw::Joint ? "joint" : "independent"},
+                                         {"seed", seed}};
   return run;
 }
 

@@ -5,9 +5,12 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "semslam/core/Version.h"
+#include "semslam/io/AtomicFile.h"
 #include "semslam/io/HypothesesJsonl.h"
 #include "semslam/io/RunMetricsFile.h"
 #include "semslam/io/RunOutputFromResult.h"
+#include "semslam/run/MethodSettings.h"
 #include "semslam/slam/LoopClosureBranches.h"
 #include "semslam/slam/SemanticSlamSmoother.h"
 
@@ -164,6 +167,7 @@ MethodRun runMethod(const MeasurementLog& log, const MethodOptions& options, con
   } else {
     runSemanticSlam(log, options, progress, run);
   }
+  run.settings = methodSettings(options);
   return run;
 }
 
@@ -173,6 +177,10 @@ void writeMethodRun(const std::string& directory, const MethodRun& run) {
   const std::filesystem::path dir(directory);
   writeRunFolder(directory, run.output);
   writeRunMetrics((dir / "metrics.json").string(), run.evaluation.metrics);
+  nlohmann::json settings = {{"schema", "semslam.settings/1"}, {"version", std::string(version())}};
+  settings.update(run.settings);
+  writeFileAtomically((dir / "settings.json").string(),
+                      [&settings](std::ostream& out) { out << settings.dump(2) << '\n'; });
   if (isHybrid(run.method)) {
     writeHypothesesJsonl((dir / "hypotheses.jsonl").string(), *run.hypothesesJsonl);
   }

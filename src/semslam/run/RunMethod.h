@@ -14,7 +14,8 @@
 // docs/association-front-end.md §6): only for mm and mm-nh (no other method has a mixture to switch) on the
 // incremental back end (the batch one re-chooses at every Gauss-Newton iterate anyway); elsewhere it is refused.
 //
-// The run folder (`output`, written by writeMethodRun): metrics.json (io/RunMetricsFile.h), trajectory.tum,
+// The run folder (`output`, written by writeMethodRun): metrics.json (io/RunMetricsFile.h), settings.json
+// (run/MethodSettings.h: the method and every option it ran with), trajectory.tum,
 // truth.tum, landmarks.csv, landmarks_truth.csv, covariances.csv, associations.csv (io/RunFolder.h), and for the
 // hybrid methods hypotheses.jsonl (io/HypothesesJsonl.h: every step's belief and its metrics, spooled to a
 // temporary file as the run goes, so that a long run does not hold them in memory). An association's
@@ -27,6 +28,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -76,6 +78,7 @@ struct MethodRun {
   HybridMarginals hybridFinal;                      ///< paper A: what the belief said at the last step
   std::optional<SpooledText> hypothesesJsonl;       ///< paper A: hypotheses.jsonl's lines (options.runFolder)
   bool hasRunFolder = false;                        ///< `output` was built (options.runFolder)
+  nlohmann::json settings;   ///< what the run was made with (run/MethodSettings.h): the folder's settings.json
 };
 
 /// Progress callback: (steps done, steps in all).

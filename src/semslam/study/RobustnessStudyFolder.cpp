@@ -1,10 +1,12 @@
 #include "semslam/study/RobustnessStudyFolder.h"
 
 #include <filesystem>
+#include <stdexcept>
 #include <nlohmann/json.hpp>
 
 #include "semslam/core/Version.h"
 #include "semslam/io/AtomicFile.h"
+#include "semslam/run/MethodSettings.h"
 
 namespace semslam {
 
@@ -14,10 +16,32 @@ int failedRobustnessRuns(const std::vector<RobustnessRow>& rows) {
   return failed;
 }
 
+namespace {
+
+/// Each method's settings as its runs make them (run/MethodSettings.h), keyed by the method's name; for a method
+/// that refuses the study's options (its runs failed, each with that error in robustness.csv), {"error": why}.
+nlohmann::json methodSettingsOf(const RobustnessStudyOptions& options) {
+  nlohmann::json settings = nlohmann::json::object();
+  for (const AssociationStrategy strategy : options.methods) {
+    MethodOptions run;  // as runRobustnessCell makes each run's
+    run.method = methodFor(strategy);
+    run.slam = options.slam;
+    run.poseCovariances = false;
+    try {
+      settings[strategyName(strategy)] = methodSettings(run);
+    } catch (const std::invalid_argument& error) {
+      settings[strategyName(strategy)] = {{"error", error.what()}};
+    }
+  }
+  return settings;
+}
+
+}  // namespace
+
 std::string robustnessStudyJson(const RobustnessStudy& study, const RobustnessStudyOptions& options,
                                 const RobustnessStudyLabels& labels) {
   const nlohmann::json settings = {
-      {"schema", "semslam.study.robustness/2"},
+      {"schema", "semslam.study.robustness/3"},
       {"version", std::string(version())},
       {"log", labels.log},
       {"methods", labels.methods},
@@ -29,19 +53,8 @@ std::string robustnessStudyJson(const RobustnessStudy& study, const RobustnessSt
       {"seeds", options.seeds},
       {"base_seed", options.baseSeed},
       {"max_steps", options.maxSteps},
-      {"gate", options.slam.gateConfidence},
-      {"null_weight", options.slam.nullWeight},
-      {"null_sigma_scale", options.slam.nullSigmaScale},
-      {"em_window", options.slam.emWindow},
-      {"em_iterations", options.slam.emIterations},
-      {"birth", birthRuleName(options.slam.birth)},
-      {"unassigned_rate", options.slam.unassignedRate},
-      {"unassigned_rate_weight", options.slam.unassignedRateWeight ? nlohmann::json(*options.slam.unassignedRateWeight)
-                                                                    : nlohmann::json(nullptr)},
       {"smoother", labels.smoother},
-      {"warm_start", options.slam.warmStart},
-      {"label_split", options.slam.labelSplit},
-      {"assignment_score", assignmentScoreName(resolvedAssignmentScore(options.slam))},
+      {"method_settings", methodSettingsOf(options)},
       {"model_misclassification_floor", options.modelMisclassificationFloor},
       {"stuck_ratio", options.stuckRatio},
       {"stuck_margin_m", options.stuckMargin},
