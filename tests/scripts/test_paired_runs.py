@@ -41,6 +41,26 @@ class PairedRuns(unittest.TestCase):
         self.assertAlmostEqual(da["m1"], -0.1)
         self.assertEqual(paired_runs.differences(self.base, self.cand, "ate_rmse", ["m"]), {"m1": 0.5, "m2": -1.0})
 
+    def test_the_settings_the_pairs_differ_in_are_named(self):
+        settings = {"schema": "semslam.settings/1", "version": "0.1.0", "method": "mm-nh",
+                    "association": {"gate": 0.9, "unassigned_rate_weight": None}}
+        for root, name, weight, version in ((self.base, "m1", None, "0.1.0"), (self.cand, "m1", 100.0, "0.2.0"),
+                                            (self.base, "m2", None, "0.1.0"), (self.cand, "m2", 100.0, "0.1.0")):
+            written = json.loads(json.dumps(settings))
+            written["association"]["unassigned_rate_weight"] = weight
+            written["version"] = version  # the release that wrote a folder is not a setting
+            if root == self.cand and name == "m2":
+                written["association"]["gate"] = 0.95
+                del written["method"]
+            with open(os.path.join(root, name, "settings.json"), "w") as out:
+                json.dump(written, out)
+        found, recorded, unrecorded = paired_runs.setting_differences(self.base, self.cand)
+        self.assertEqual(recorded, 2)
+        self.assertEqual(found, {("association.unassigned_rate_weight", "null", "100.0"): 2,
+                                 ("association.gate", "0.9", "0.95"): 1, ("method", '"mm-nh"', None): 1})
+        self.assertEqual(unrecorded, 1)  # t1: no settings.json ("only-here" has no pair)
+        self.assertEqual(paired_runs.setting_differences(self.base, self.cand, ["t"]), ({}, 0, 1))
+
     def test_the_summary_is_the_paired_mean_t_and_counts(self):
         s = paired_runs.summary([0.5, -1.0, 0.25])
         self.assertAlmostEqual(s["mean"], -0.25 / 3)
