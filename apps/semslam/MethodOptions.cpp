@@ -66,6 +66,12 @@ void addSemanticSlamOptions(CLI::App* command, SemanticSlamOptions& options) {
           "--unassigned-rate counting as this many steps of prior data (docs/association-front-end.md §10, \"mu "
           "from the run\"; default: the rate is constant)")
       ->check(CLI::Range(1e-9, 1e9));
+  command
+      ->add_option_function<double>(
+          "--unassigned-rate-memory", [&options](double steps) { options.unassignedRateMemory = steps; },
+          "with --unassigned-rate-weight: estimate the rate over about this many recent steps, each step's count "
+          "discounted by 1 - 1/M (docs/association-front-end.md §10; default: every step alike)")
+      ->check(CLI::Range(1.0, 1e9));
   command->add_flag("--no-warm-start{false}", options.warmStart,
                     "mm, mm-nh: choose mixture components at the odometry prediction (docs/max-mixtures.md)");
   command->add_flag("--no-null-escape{false}", options.nullEscape,

@@ -13,8 +13,8 @@ namespace semslam::cli {
 
 /// Paper B's pipeline: --gate, --null-weight, --null-sigma-scale, --em-window, --em-iterations, --birth,
 /// --confirmations, --confirmation-spacing, --confirmation-viewpoint, --confirmation-viewpoint-sigmas, --patience,
-/// --unassigned-rate, --unassigned-rate-weight, --no-warm-start, --no-null-escape, --null-escape-window, --label-split,
-/// --loop-closure-branches, --anchoring-information, --warm-start-posterior.
+/// --unassigned-rate, --unassigned-rate-weight, --unassigned-rate-memory, --no-warm-start, --no-null-escape,
+/// --null-escape-window, --label-split, --loop-closure-branches, --anchoring-information, --warm-start-posterior.
 void addSemanticSlamOptions(CLI::App* command, SemanticSlamOptions& options);
 
 /// Paper A's hybrid belief: --samples, --weights, --importance-iterations, --prune-ratio, --gate-ratio, --branching,

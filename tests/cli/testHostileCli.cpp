@@ -71,6 +71,22 @@ TEST(HostileCli, AnUnassignedRateWeightThatIsNotAPositiveNumberIsRefused) {
   EXPECT_FALSE(fs::exists(scratch.path("r")));
 }
 
+TEST(HostileCli, AnUnassignedRateMemoryBelowOneStepOrWithoutAnEstimatedRateIsRefused) {
+  const semslam::test::TempDir scratch;
+  const std::string log = scratch.path("a.jsonl");
+  ASSERT_EQ(runSemslam("simulate semantic --steps 3 --out " + log).exitCode, 0);
+  const std::string run = "run --method mm-nh --in " + log + " --out " + scratch.path("r");
+  for (const std::string value : {"0", "0.5", "-1", "inf", "1e400", "abc"}) {
+    expectRefused(runSemslam(run + " --unassigned-rate-weight 10 --unassigned-rate-memory " + value),
+                  "--unassigned-rate-memory");
+  }
+  expectRefused(runSemslam(run + " --unassigned-rate-weight 10 --unassigned-rate-memory nan"),
+                "memory must be finite and at least 1");
+  expectRefused(runSemslam(run + " --unassigned-rate-memory 50"), "needs an estimated rate");
+  EXPECT_FALSE(fs::exists(scratch.path("r")));
+  EXPECT_EQ(runSemslam(run + " --unassigned-rate-weight 10 --unassigned-rate-memory 50 --quiet").exitCode, 0);
+}
+
 TEST(HostileCli, IntegersAreDecimalNeverOctalOrHexadecimal) {
   // CLI11 reads integers with strtoll(..., 0): "--seed 0467" became seed 311 and "--steps 010" 8 steps, silently
   // (found by the options fuzz harness).

@@ -64,6 +64,7 @@ TEST(MethodSettings, EveryOptionOfPaperBsFrontEndIsRecorded) {
       {"gate", [](SemanticSlamOptions& o) { o.gateConfidence = 0.99; }},
       {"unassigned_rate", [](SemanticSlamOptions& o) { o.unassignedRate = 0.3; }},
       {"unassigned_rate_weight", [](SemanticSlamOptions& o) { o.unassignedRateWeight = 100.0; }},
+      {"unassigned_rate_memory", [](SemanticSlamOptions& o) { o.unassignedRateMemory = 50.0; }},
       {"confirmations", [](SemanticSlamOptions& o) { o.provisional.confirmations = 3; }},
       {"confirmation_spacing", [](SemanticSlamOptions& o) { o.provisional.spacingSeconds = 2.0; }},
       {"confirmation_viewpoint", [](SemanticSlamOptions& o) { o.provisional.viewpointDistance = 1.5; }},

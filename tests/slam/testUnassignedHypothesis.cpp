@@ -98,6 +98,38 @@ TEST(UnassignedHypothesis, AnEstimatedRateIsThePosteriorMeanOfTheCountedSteps) {
   EXPECT_THROW(static_cast<void>(estimated.withRate(0.0)), std::invalid_argument);
 }
 
+// μ from the run with a memory of M steps: the counts discounted by γ = 1 − 1/M a step, the prior kept whole, so
+// μ̂ = (w μ₀ + Σ γ^(T−i) n_i) / (w + Σ γ^(T−i)): it follows a rate that changes, where the plain estimate averages.
+TEST(UnassignedHypothesis, AnEstimateWithAMemoryDiscountsOldStepsAndFollowsAChangedRate) {
+  OneLandmark setup;
+  UnassignedHypothesis remembering(setup.log.header, 2.0, 4.0, 10.0);
+  const double gamma = 0.9;
+  for (int count : {3, 0, 1}) remembering.countStep(count);
+  const double n = (gamma * 3.0 + 0.0) * gamma + 1.0, t = (gamma + 1.0) * gamma + 1.0;
+  EXPECT_NEAR(remembering.rate(), (4.0 * 2.0 + n) / (4.0 + t), 1e-15);
+  // A memory of one step keeps only the last count: μ̂ = (w μ₀ + n_T) / (w + 1).
+  UnassignedHypothesis lastStep(setup.log.header, 2.0, 4.0, 1.0);
+  for (int count : {3, 0, 5}) lastStep.countStep(count);
+  EXPECT_NEAR(lastStep.rate(), (8.0 + 5.0) / 5.0, 1e-15);
+  // 2000 steps at rate 2, then 200 at rate 0.25: the remembering estimate is near the new rate, the plain one near
+  // the run's average.
+  UnassignedHypothesis plain(setup.log.header, 1.0, 10.0);
+  UnassignedHypothesis recent(setup.log.header, 1.0, 10.0, 20.0);
+  for (int step = 0; step < 2200; ++step) {
+    const int count = step < 2000 ? 2 : (step % 4 == 0 ? 1 : 0);
+    plain.countStep(count);
+    recent.countStep(count);
+  }
+  EXPECT_GT(plain.rate(), 1.7);  // (10 + 4000 + 50) / (10 + 2200) ≈ 1.84
+  // γ^200 ≈ 3.5e-5: the old steps are gone; Σ γ^i ≈ 20 recent steps holding ≈ 5 detections: (10 + 5) / (10 + 20).
+  EXPECT_NEAR(recent.rate(), 0.5, 0.05);
+  // Refused: a memory below one step or not finite, and a memory without an estimated rate.
+  for (double memory : {0.0, 0.5, -3.0, std::numeric_limits<double>::infinity(), std::nan("")}) {
+    EXPECT_THROW(UnassignedHypothesis(setup.log.header, 1.0, 4.0, memory), std::invalid_argument) << memory;
+  }
+  EXPECT_THROW(UnassignedHypothesis(setup.log.header, 1.0, std::nullopt, 10.0), std::invalid_argument);
+}
+
 // Through the front end: after T steps with nothing unassigned, μ̂ = w μ₀ / (w + T), and the switch point of the
 // next detection is d*(S, λ) at that μ̂, not at μ₀: a detection between the two switch points goes to the
 // landmark under the estimate and would start a new one under the constant μ₀ (whose switch point is nearer).

@@ -16,7 +16,8 @@ void requirePositiveRate(double rate) {
 
 }  // namespace
 
-UnassignedHypothesis::UnassignedHypothesis(const LogHeader& header, double rate, std::optional<double> rateWeight)
+UnassignedHypothesis::UnassignedHypothesis(const LogHeader& header, double rate, std::optional<double> rateWeight,
+                                           std::optional<double> rateMemory)
     : kind_(header.sensor.kind),
       dimension_(header.dimension),
       rate_(rate),
@@ -26,6 +27,15 @@ UnassignedHypothesis::UnassignedHypothesis(const LogHeader& header, double rate,
   requirePositiveRate(rate);
   if (rateWeight && (!(*rateWeight > 0.0) || !std::isfinite(*rateWeight))) {
     throw std::invalid_argument("the unassigned rate's prior weight must be positive and finite (steps)");
+  }
+  if (rateMemory) {
+    if (!(*rateMemory >= 1.0) || !std::isfinite(*rateMemory)) {
+      throw std::invalid_argument("the unassigned rate's memory must be finite and at least 1 (steps)");
+    }
+    if (!rateWeight) {
+      throw std::invalid_argument("the unassigned rate's memory needs an estimated rate (a prior weight)");
+    }
+    countDiscount_ = 1.0 - 1.0 / *rateMemory;
   }
 }
 
@@ -37,8 +47,8 @@ double UnassignedHypothesis::rate() const {
 void UnassignedHypothesis::countStep(int unassignedDetections) {
   if (unassignedDetections < 0) throw std::invalid_argument("countStep: a negative count of unassigned detections");
   if (!rateWeight_) return;
-  unassignedCounted_ += unassignedDetections;
-  stepsCounted_ += 1.0;
+  unassignedCounted_ = countDiscount_ * unassignedCounted_ + unassignedDetections;  // γ n + n_k (γ = 1: n + n_k)
+  stepsCounted_ = countDiscount_ * stepsCounted_ + 1.0;
 }
 
 UnassignedHypothesis UnassignedHypothesis::withRate(double rate) const {

@@ -10,7 +10,11 @@
 //            μ̂ = (w μ₀ + n) / (w + T),
 //          the posterior mean of a Poisson rate under a Gamma(w μ₀, w) prior: μ₀ = `rate` counted as w steps of
 //          prior data, n the detections the run decided unassigned over its T steps so far (countStep(); a
-//          decision at step k counts from step k + 1 on). docs/association-front-end.md §10, "μ from the run";
+//          decision at step k counts from step k + 1 on). docs/association-front-end.md §10, "μ from the run".
+//          With a memory of M steps (`rateMemory`) the counts are discounted, as for a rate that drifts (West
+//          and Harrison's discount factor for a Poisson level): each step multiplies n and T by γ = 1 − 1/M
+//          before adding its own, so μ̂ = (w μ₀ + Σ_i γ^(T−i) n_i) / (w + Σ_i γ^(T−i)) weighs the last ~M steps
+//          (Σ γ^i < M) while the prior w is kept whole, so a long stretch without births cannot drive μ̂ to 0;
 //   V      the sensor field's area (2D) or volume (3D) in the world: a sector of radius r_max and opening Φ,
 //          V = Φ r_max² / 2; in 3D a spherical sector, V = (r_max³ / 3) · Φ · 2 sin(Ψ / 2) with Ψ the elevation span;
 //   J      the Jacobian of the back-projection, since births are uniform in the world, not in the sensor's
@@ -38,10 +42,12 @@ class UnassignedHypothesis {
  public:
   static constexpr double kDefaultRate = 1.0;
 
-  /// `rate` is μ, or μ₀ when `rateWeight` (w, in steps) is given: μ is then estimated from countStep() as above.
-  /// Throws std::invalid_argument for a rate or a weight that is not positive and finite.
+  /// `rate` is μ, or μ₀ when `rateWeight` (w, in steps) is given: μ is then estimated from countStep() as above,
+  /// over the last ~`rateMemory` (M) steps where that is given. Throws std::invalid_argument for a rate or a weight
+  /// that is not positive and finite, a memory that is not finite and ≥ 1, or a memory without a weight.
   UnassignedHypothesis(const LogHeader& header, double rate = kDefaultRate,
-                       std::optional<double> rateWeight = std::nullopt);
+                       std::optional<double> rateWeight = std::nullopt,
+                       std::optional<double> rateMemory = std::nullopt);
 
   /// The μ in use: the constant rate, or the estimate μ̂ from the steps counted so far.
   double rate() const;
@@ -89,6 +95,7 @@ class UnassignedHypothesis {
   int dimension_;
   double rate_;                        // μ, or μ₀ with a weight
   std::optional<double> rateWeight_;   // w: set where μ is estimated
+  double countDiscount_ = 1.0;         // γ = 1 − 1/M; 1 without a memory
   double unassignedCounted_ = 0.0;     // n
   double stepsCounted_ = 0.0;          // T
   double specRange_, specFieldOfView_;

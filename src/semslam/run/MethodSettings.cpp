@@ -18,6 +18,7 @@ nlohmann::json associationSettings(const SemanticSlamOptions& options) {
       {"gate", options.gateConfidence},
       {"unassigned_rate", options.unassignedRate},
       {"unassigned_rate_weight", optionalJson(options.unassignedRateWeight)},
+      {"unassigned_rate_memory", optionalJson(options.unassignedRateMemory)},
       {"confirmations", options.provisional.confirmations},
       {"confirmation_spacing", options.provisional.spacingSeconds},
       {"confirmation_viewpoint", options.provisional.viewpointDistance},

@@ -97,7 +97,7 @@ SemanticSlam::SemanticSlam(const LogHeader& header, SemanticSlamOptions options)
       options_(std::move(options)),
       factory_(header),
       gate_(options_.gateConfidence),
-      unassigned_(header, options_.unassignedRate, options_.unassignedRateWeight),
+      unassigned_(header, options_.unassignedRate, options_.unassignedRateWeight, options_.unassignedRateMemory),
       lifecycle_(options_.provisional),
       orientationUnobservable_(factory_.landmarksHavePose() && header.sensor.kind != SensorKind::RelativePose),
       preselection_(header, gate_),

@@ -128,6 +128,10 @@ struct SemanticSlamOptions {
   /// Where set, μ is estimated from the run with this prior weight, in steps, on unassignedRate
   /// (UnassignedHypothesis.h; docs/association-front-end.md §10, "μ from the run"); unset, μ is unassignedRate.
   std::optional<double> unassignedRateWeight;
+  /// With unassignedRateWeight: the estimate's memory in steps, its counts discounted by 1 − 1/M a step
+  /// (UnassignedHypothesis.h; docs/association-front-end.md §10, "μ from the run, with a memory"); unset: every step
+  /// counts alike.
+  std::optional<double> unassignedRateMemory;
   double gateConfidence = AssociationGate::kDefaultConfidence;
   double nullWeight = 0.1;        ///< mm-nh: weight of the null hypothesis (B, sec. IV-C)
   double nullSigmaScale = 100.0;  ///< mm-nh: the null hypothesis's standard deviations over the detection's
